@@ -1,0 +1,82 @@
+#include "demo/demo_block.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "io/atomic_file.hpp"
+#include "material/noise.hpp"
+#include "render/renderers.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+namespace fs = std::filesystem;
+
+Project demoProject(std::uint32_t seed) {
+  Project project;
+  project.block = Block(glm::vec3(40.0f));
+  project.params.seed = static_cast<float>(seed);
+  // The schema defaults describe a ring-porous hardwood (chestnut-like) with the pith below face D
+  // side and behind face F; the demo uses them as they are, so "defaults" and "demo" agree.
+  project.rates = synthesizeGrowthRates(project.params, project.block);
+  return project;
+}
+
+void applyPhotoLook(Image& image, FaceId face, std::uint32_t seed) {
+  const std::uint32_t h = noise::hash(faceIndex(face), static_cast<std::int32_t>(seed), 0xfaceu);
+  const float lightAngle = noise::unit(noise::mix(h ^ 1u)) * 6.2831853f;
+  const glm::vec2 lightDir(std::cos(lightAngle), std::sin(lightAngle));
+  const glm::vec3 whiteBalance(1.0f + 0.04f * noise::signedUnit(noise::mix(h ^ 2u)),
+                               1.0f + 0.02f * noise::signedUnit(noise::mix(h ^ 3u)),
+                               1.0f + 0.04f * noise::signedUnit(noise::mix(h ^ 4u)));
+  const float exposure = 1.0f + 0.05f * noise::signedUnit(noise::mix(h ^ 5u));
+  std::mt19937 random(h);
+  std::normal_distribution<float> sensor(0.0f, 0.012f);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const glm::vec2 q((x + 0.5f) / image.width - 0.5f, (y + 0.5f) / image.height - 0.5f);
+      const float light = exposure * (1.0f + 0.12f * glm::dot(q, lightDir)) * (1.0f - 0.16f * glm::dot(q, q));
+      float* px = image.pixel(x, y);
+      for (int c = 0; c < 3; ++c) px[c] = std::clamp(px[c] * light * whiteBalance[c] + sensor(random), 0.0f, 1.0f);
+    }
+  }
+}
+
+DemoFiles writeDemo(const fs::path& folder, const DemoOptions& options, const Progress& progress) {
+  if (options.facePixels < 8 || options.facePixels > 8192) throw InputError("demo face size must be 8..8192 pixels");
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (!fs::is_directory(folder)) throw InputError("cannot create folder " + folder.string());
+
+  Project project = demoProject(options.seed);
+  const WoodModel model(project);
+  DemoFiles files;
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    Progress part{progress.report ? [&, i](double f) { progress.report((i + f) / 6.0); } : std::function<void(double)>{},
+                  progress.stop};
+    const glm::ivec2 size = model.block().faceImageSize(face, options.facePixels / model.block().face(face).widthMm);
+    Image image = renderFace(model, face, size, options.samples, part);
+    if (options.photoLook) applyPhotoLook(image, face, options.seed);
+    files.photos[i] = folder / (std::string(1, faceLetter(face)) + "_col.png");
+    writeImage(files.photos[i], image);
+    project.facePhotos[i] = fs::absolute(files.photos[i]);
+  }
+  files.truth = folder / "truth.json";
+  nlohmann::json truth = {{"format", "kerf-demo-truth"},
+                          {"version", 1},
+                          {"description", "The true parameters the demo photos were rendered from."},
+                          {"block", {{"size_mm", {40, 40, 40}}}},
+                          {"face_pixels", options.facePixels},
+                          {"samples_per_pixel_side", options.samples},
+                          {"photo_look", options.photoLook},
+                          {"parameters", parametersToJson(project.params)},
+                          {"growth_rates", growthRatesToJson(*project.rates)}};
+  writeTextAtomically(files.truth, truth.dump(2) + "\n");
+  files.project = folder / "demo.kerf";
+  saveProject(project, files.project);
+  return files;
+}
+
+}  // namespace kerf

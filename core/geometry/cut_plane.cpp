@@ -1,0 +1,67 @@
+#include "geometry/cut_plane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "util/error.hpp"
+
+namespace kerf {
+
+CutPlane::CutPlane(glm::vec3 point, glm::vec3 normal) : point_(point) {
+  const float len = glm::length(normal);
+  if (!std::isfinite(len) || len < 1e-8f || !std::isfinite(point.x + point.y + point.z)) {
+    throw InputError("a cut plane needs a finite point and a non-zero normal");
+  }
+  normal_ = normal / len;
+  const float ax = std::abs(normal_.x), ay = std::abs(normal_.y), az = std::abs(normal_.z);
+  glm::vec3 upHint(0, 1, 0);
+  if (ay >= ax && ay >= az) upHint = glm::vec3(0, 0, normal_.y > 0 ? -1.0f : 1.0f);
+  up_ = glm::normalize(upHint - glm::dot(upHint, normal_) * normal_);
+  right_ = glm::normalize(glm::cross(up_, normal_));
+  up_ = glm::cross(normal_, right_);
+}
+
+glm::vec2 CutPlane::toPlane(glm::vec3 p) const {
+  const glm::vec3 d = p - point_;
+  return {glm::dot(d, right_), glm::dot(d, up_)};
+}
+
+std::optional<PlaneRect> CutPlane::boundsInBlock(const Block& block) const {
+  const glm::vec3 h = block.halfSize();
+  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  bool any = false;
+  // Intersect the plane with the 12 box edges: along each axis, 4 edges.
+  for (int axis = 0; axis < 3; ++axis) {
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    for (int corner = 0; corner < 4; ++corner) {
+      glm::vec3 start(0.0f);
+      start[a1] = (corner & 1) ? h[a1] : -h[a1];
+      start[a2] = (corner & 2) ? h[a2] : -h[a2];
+      start[axis] = -h[axis];
+      glm::vec3 dir(0.0f);
+      dir[axis] = 2.0f * h[axis];
+      const float denom = glm::dot(normal_, dir);
+      const float num = glm::dot(normal_, point_ - start);
+      float t;
+      if (std::abs(denom) < 1e-9f) {
+        if (std::abs(num) > 1e-5f) continue;  // edge parallel to the plane and off it
+        for (float tt : {0.0f, 1.0f}) {       // edge lies in the plane: both ends count
+          const glm::vec2 q = toPlane(start + tt * dir);
+          lo = glm::min(lo, q), hi = glm::max(hi, q), any = true;
+        }
+        continue;
+      }
+      t = num / denom;
+      if (t < -1e-6f || t > 1.0f + 1e-6f) continue;
+      const glm::vec2 q = toPlane(start + std::clamp(t, 0.0f, 1.0f) * dir);
+      lo = glm::min(lo, q), hi = glm::max(hi, q), any = true;
+    }
+  }
+  if (!any || hi.x - lo.x <= 0.0f || hi.y - lo.y <= 0.0f) return std::nullopt;
+  return PlaneRect{lo, hi};
+}
+
+}  // namespace kerf

@@ -1,0 +1,90 @@
+#include "io/image.hpp"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+namespace {
+
+std::unique_ptr<OIIO::ImageInput> openInput(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw InputError("image not found: " + path.string());
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) {
+    throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());
+  }
+  return in;
+}
+
+}  // namespace
+
+glm::ivec2 readImageSize(const std::filesystem::path& path) {
+  auto in = openInput(path);
+  const OIIO::ImageSpec& spec = in->spec();
+  return {spec.width, spec.height};
+}
+
+Image readImage(const std::filesystem::path& path, bool keepChannels) {
+  auto in = openInput(path);
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+    throw InputError("image " + path.string() + " is empty");
+  }
+  Image raw(spec.width, spec.height, spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.pixels.data())) {
+    throw InputError("cannot decode image " + path.string() + ": " + in->geterror());
+  }
+  if (keepChannels || spec.nchannels == 3) return raw;
+  Image rgb(spec.width, spec.height, 3);
+  for (int y = 0; y < spec.height; ++y)
+    for (int x = 0; x < spec.width; ++x) {
+      const float* s = raw.pixel(x, y);
+      float* d = rgb.pixel(x, y);
+      for (int c = 0; c < 3; ++c) d[c] = s[spec.nchannels >= 3 ? c : 0];
+    }
+  return rgb;
+}
+
+void writeImage(const std::filesystem::path& path, const Image& image, int bits) {
+  if (image.empty()) throw InputError("refusing to write an empty image to " + path.string());
+  writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+    // OIIO picks the format from the extension, so the temporary file keeps it.
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) throw InputError("cannot write " + path.string() + ": " + OIIO::geterror());
+    OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                         bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+    if (!out->open(temporary.string(), spec) ||
+        !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close()) {
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    }
+  });
+}
+
+ImageDifference compareImages(const Image& a, const Image& b, float tolerance) {
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
+    throw InputError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + "x" +
+                     std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+                     "x" + std::to_string(b.channels));
+  }
+  ImageDifference d;
+  std::size_t over = 0;
+  const std::size_t count = static_cast<std::size_t>(a.width) * a.height;
+  for (std::size_t i = 0; i < count; ++i) {
+    float worst = 0;
+    for (int c = 0; c < a.channels; ++c) {
+      const float e = std::abs(a.pixels[i * a.channels + c] - b.pixels[i * a.channels + c]);
+      d.meanAbs += e;
+      worst = std::max(worst, e);
+    }
+    if (worst > tolerance) ++over;
+  }
+  d.meanAbs /= static_cast<double>(count * a.channels);
+  d.shareOverTolerance = static_cast<double>(over) / count;
+  return d;
+}
+
+}  // namespace kerf

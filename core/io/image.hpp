@@ -1,0 +1,41 @@
+#pragma once
+// A plain float image (values 0..1, interleaved channels) and reading/writing it with OpenImageIO.
+#include <filesystem>
+#include <glm/vec3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <string>
+#include <vector>
+
+namespace kerf {
+
+struct Image {
+  int width = 0, height = 0, channels = 3;
+  std::vector<float> pixels;  // row-major, top row first, `channels` floats per pixel
+
+  Image() = default;
+  Image(int w, int h, int c) : width(w), height(h), channels(c), pixels(static_cast<std::size_t>(w) * h * c, 0.0f) {}
+  float* pixel(int x, int y) { return &pixels[(static_cast<std::size_t>(y) * width + x) * channels]; }
+  const float* pixel(int x, int y) const { return &pixels[(static_cast<std::size_t>(y) * width + x) * channels]; }
+  bool empty() const { return pixels.empty(); }
+};
+
+// Reads any format OpenImageIO knows; converts to float 0..1 with 3 channels (grey is replicated,
+// alpha dropped) unless keepChannels. Throws InputError with a message naming the file.
+Image readImage(const std::filesystem::path& path, bool keepChannels = false);
+// Only the size, without decoding pixels. Throws InputError.
+glm::ivec2 readImageSize(const std::filesystem::path& path);
+
+// Writes the image (format from the extension; 8 bits per channel unless bits = 16), atomically:
+// a temporary file in the same folder is renamed over the target. Throws InputError.
+void writeImage(const std::filesystem::path& path, const Image& image, int bits = 8);
+
+// Mean absolute difference per channel value, and the share of pixels whose largest channel
+// difference exceeds `pixelTolerance`. Sizes must match (throws InputError otherwise).
+struct ImageDifference {
+  double meanAbs = 0;
+  double shareOverTolerance = 0;
+};
+ImageDifference compareImages(const Image& a, const Image& b, float pixelTolerance);
+
+}  // namespace kerf

@@ -1,0 +1,209 @@
+#include "io/project.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const char* kVersionString = "0.1.0";
+
+// nlohmann stores NaN/inf as null; read numbers strictly so a null or a string is a clear error.
+float readNumber(const json& value, const std::string& what) {
+  if (!value.is_number()) throw InputError(what + " must be a number, got " + value.dump());
+  const double v = value.get<double>();
+  if (!std::isfinite(v)) throw InputError(what + " is not a finite number");
+  return static_cast<float>(v);
+}
+
+glm::vec3 readVec3(const json& value, const std::string& what) {
+  if (!value.is_array() || value.size() != 3) throw InputError(what + " must be a list of 3 numbers, got " + value.dump());
+  return {readNumber(value[0], what), readNumber(value[1], what), readNumber(value[2], what)};
+}
+
+json writeVec3(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
+
+}  // namespace
+
+json parametersToJson(const WoodParameters& params) {
+  json out = json::object();
+  const auto schema = parameterSchema();
+  for (std::size_t i = 0; i < schema.size(); ++i) {
+    const auto values = params.components(i);
+    if (values.size() == 1) {
+      out[std::string(schema[i].id)] = schema[i].kind == ParamKind::Integer ? json(static_cast<long>(values[0]))
+                                                                              : json(values[0]);
+    } else {
+      out[std::string(schema[i].id)] = json::array({values[0], values[1], values[2]});
+    }
+  }
+  return out;
+}
+
+WoodParameters parametersFromJson(const json& in) {
+  if (!in.is_object()) throw InputError("\"parameters\" must be an object of id: value pairs");
+  WoodParameters params;
+  for (const auto& [id, value] : in.items()) {
+    const auto index = parameterIndex(id);
+    if (!index) throw InputError("unknown parameter \"" + id + "\" (see `kerf-cli params` for the list)");
+    const auto target = params.components(*index);
+    if (target.size() == 1) {
+      target[0] = readNumber(value, "parameter " + id);
+    } else {
+      const glm::vec3 v = readVec3(value, "parameter " + id);
+      target[0] = v.x, target[1] = v.y, target[2] = v.z;
+    }
+  }
+  validate(params);
+  return params;
+}
+
+json growthRatesToJson(const GrowthRates& g) {
+  return {{"heights", g.heights},
+          {"azimuths", g.azimuths},
+          {"radii", g.radii},
+          {"height_range_mm", json::array({g.heightMin, g.heightMax})},
+          {"radius_range_mm", json::array({g.radiusMin, g.radiusMax})},
+          {"rates", g.rates}};
+}
+
+GrowthRates growthRatesFromJson(const json& in) {
+  if (!in.is_object()) throw InputError("\"growth_rates\" must be an object");
+  try {
+    GrowthRates g;
+    g.heights = in.at("heights").get<int>();
+    g.azimuths = in.at("azimuths").get<int>();
+    g.radii = in.at("radii").get<int>();
+    const json& hr = in.at("height_range_mm");
+    const json& rr = in.at("radius_range_mm");
+    if (!hr.is_array() || hr.size() != 2 || !rr.is_array() || rr.size() != 2) {
+      throw InputError("growth_rates ranges must be [min, max] pairs");
+    }
+    g.heightMin = readNumber(hr[0], "growth_rates.height_range_mm");
+    g.heightMax = readNumber(hr[1], "growth_rates.height_range_mm");
+    g.radiusMin = readNumber(rr[0], "growth_rates.radius_range_mm");
+    g.radiusMax = readNumber(rr[1], "growth_rates.radius_range_mm");
+    const json& rates = in.at("rates");
+    if (!rates.is_array()) throw InputError("growth_rates.rates must be a list of numbers");
+    g.rates.reserve(rates.size());
+    for (const json& r : rates) g.rates.push_back(readNumber(r, "growth_rates.rates entry"));
+    g.validate();
+    return g;
+  } catch (const json::exception& e) {
+    throw InputError(std::string("malformed growth_rates: ") + e.what());
+  }
+}
+
+json projectToJson(const Project& project, const fs::path& baseDir) {
+  json faces = json::object();
+  for (FaceId face : kAllFaces) {
+    const fs::path& photo = project.facePhotos[faceIndex(face)];
+    if (photo.empty()) continue;
+    faces[std::string(1, faceLetter(face))] = {{"photo", photo.lexically_proximate(baseDir).generic_string()}};
+  }
+  json out = {{"format", kProjectFormatName},
+              {"version", kProjectFormatVersion},
+              {"generator", std::string("Kerf ") + kVersionString},
+              {"block", {{"size_mm", writeVec3(project.block.size())}}},
+              {"faces", faces},
+              {"parameters", parametersToJson(project.params)}};
+  if (project.rates) out["growth_rates"] = growthRatesToJson(*project.rates);
+  return out;
+}
+
+Project projectFromJson(const json& in, const fs::path& baseDir) {
+  if (!in.is_object() || in.value("format", "") != kProjectFormatName) {
+    throw InputError("not a Kerf project (missing \"format\": \"kerf-project\")");
+  }
+  if (!in.contains("version") || !in["version"].is_number_integer()) {
+    throw InputError("the project has no format version");
+  }
+  const int version = in["version"].get<int>();
+  if (version > kProjectFormatVersion) {
+    throw InputError("the project was written by a newer Kerf (format version " + std::to_string(version) +
+                     "); this Kerf reads format versions up to " + std::to_string(kProjectFormatVersion) +
+                     ". Please update Kerf.");
+  }
+  if (version < 1) throw InputError("unknown project format version " + std::to_string(version));
+
+  Project project;
+  if (in.contains("block")) {
+    const json& block = in["block"];
+    if (!block.is_object() || !block.contains("size_mm")) throw InputError("\"block\" needs \"size_mm\": [x, y, z]");
+    project.block = Block(readVec3(block["size_mm"], "block.size_mm"));
+  }
+  if (in.contains("faces")) {
+    const json& faces = in["faces"];
+    if (!faces.is_object()) throw InputError("\"faces\" must be an object keyed A..F");
+    for (const auto& [key, face] : faces.items()) {
+      const auto id = key.size() == 1 ? faceFromLetter(key[0]) : std::nullopt;
+      if (!id) throw InputError("unknown face \"" + key + "\" (faces are A..F)");
+      if (!face.is_object() || !face.contains("photo") || !face["photo"].is_string()) {
+        throw InputError("face " + key + " needs \"photo\": \"file name\"");
+      }
+      project.facePhotos[faceIndex(*id)] = (baseDir / face["photo"].get<std::string>()).lexically_normal();
+    }
+  }
+  if (in.contains("parameters")) project.params = parametersFromJson(in["parameters"]);
+  if (in.contains("growth_rates") && !in["growth_rates"].is_null()) {
+    project.rates = growthRatesFromJson(in["growth_rates"]);
+  }
+  return project;
+}
+
+Project loadProject(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) throw InputError("cannot open project " + file.string() + ": file not found or unreadable");
+  json in;
+  try {
+    in = json::parse(stream);
+  } catch (const json::parse_error& e) {
+    throw InputError("project " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) + ")");
+  }
+  try {
+    return projectFromJson(in, fs::absolute(file).parent_path());
+  } catch (const InputError& e) {
+    throw InputError("project " + file.string() + ": " + e.what());
+  }
+}
+
+void saveProject(const Project& project, const fs::path& file) {
+  const fs::path base = fs::absolute(file).parent_path();
+  writeTextAtomically(file, projectToJson(project, base).dump(2) + "\n");
+}
+
+Project projectFromSampleFolder(const fs::path& folder, glm::vec3 blockSize) {
+  if (!fs::is_directory(folder)) throw InputError("not a folder: " + folder.string());
+  Project project;
+  project.block = Block(blockSize);
+  int found = 0;
+  for (FaceId face : kAllFaces) {
+    for (const char* ext : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".PNG", ".JPG"}) {
+      const fs::path candidate = folder / (std::string(1, faceLetter(face)) + "_col" + ext);
+      if (fs::exists(candidate)) {
+        project.facePhotos[faceIndex(face)] = fs::absolute(candidate).lexically_normal();
+        ++found;
+        break;
+      }
+    }
+  }
+  if (found == 0) {
+    throw InputError("folder " + folder.string() + " holds no face photos (expected A_col.png .. F_col.png)");
+  }
+  return project;
+}
+
+Project loadDocument(const fs::path& path) {
+  if (fs::is_directory(path)) return projectFromSampleFolder(path);
+  return loadProject(path);
+}
+
+}  // namespace kerf

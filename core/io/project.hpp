@@ -1,0 +1,55 @@
+#pragma once
+// A Kerf document: the block, its face photos, every procedural parameter and (when fitted or edited)
+// the growth-rate grid. Stored as a versioned JSON `.kerf` file with photo paths relative to it.
+#include <array>
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+
+#include "field/growth_rates.hpp"
+#include "geometry/block.hpp"
+#include "params/parameter_schema.hpp"
+
+namespace kerf {
+
+inline constexpr int kProjectFormatVersion = 1;
+inline constexpr const char* kProjectFormatName = "kerf-project";
+
+struct Project {
+  Block block;
+  WoodParameters params;
+  // Explicit growth rates (fitted, or saved from an edit). Without them the rates are synthesised
+  // from the growth.* parameters (synthesizeGrowthRates).
+  std::optional<GrowthRates> rates;
+  // Face photos A..F; empty when a face has none. Absolute paths in memory.
+  std::array<std::filesystem::path, 6> facePhotos;
+
+  GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
+};
+
+// JSON (de)serialisation. Paths are written relative to `baseDir` and resolved against it on reading.
+// Missing parameters take their defaults; unknown ones are refused, as are NaNs, out-of-range values,
+// and format versions this Kerf does not read. Errors are InputError with a message that names the field.
+nlohmann::json projectToJson(const Project& project, const std::filesystem::path& baseDir);
+Project projectFromJson(const nlohmann::json& json, const std::filesystem::path& baseDir);
+
+// Parameters alone (as in projects and presets): {"growth.ring_width": 3.0, "color.earlywood": [r,g,b], ...}
+nlohmann::json parametersToJson(const WoodParameters& params);
+WoodParameters parametersFromJson(const nlohmann::json& json);  // throws InputError
+
+nlohmann::json growthRatesToJson(const GrowthRates& rates);
+GrowthRates growthRatesFromJson(const nlohmann::json& json);  // throws InputError
+
+// Files. saveProject writes atomically.
+Project loadProject(const std::filesystem::path& file);
+void saveProject(const Project& project, const std::filesystem::path& file);
+
+// A Mokume-style sample folder: A_col.png .. F_col.png (other extensions accepted) on a 40 mm cube.
+// Faces that are missing stay empty; a folder without any face photo is an InputError.
+Project projectFromSampleFolder(const std::filesystem::path& folder, glm::vec3 blockSizeMm = glm::vec3(40.0f));
+
+// A project file or a sample folder, whichever `path` is.
+Project loadDocument(const std::filesystem::path& path);
+
+}  // namespace kerf

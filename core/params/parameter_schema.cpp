@@ -1,0 +1,100 @@
+#include "params/parameter_schema.hpp"
+
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+#include <sstream>
+#include <vector>
+
+#include "util/error.hpp"
+
+namespace kerf {
+namespace {
+
+#define V1(a) \
+  { float(a), 0.0f, 0.0f }
+#define V3(a, b, c) \
+  { float(a), float(b), float(c) }
+const ParamSpec kSchema[] = {
+#define KERF_PARAM(name, id, group, label, unit, kind, def, smin, smax, hmin, hmax, fit, tip) \
+  {#name, id, group, label, unit, ParamKind::kind, def, smin, smax, hmin, hmax, fit, tip},
+#include "params/wood_parameters.def"
+#undef KERF_PARAM
+};
+#undef V1
+#undef V3
+
+float* componentPointer(float& value) { return &value; }
+float* componentPointer(glm::vec3& value) { return glm::value_ptr(value); }
+
+}  // namespace
+
+std::string_view paramKindName(ParamKind kind) {
+  switch (kind) {
+    case ParamKind::Scalar: return "scalar";
+    case ParamKind::Integer: return "integer";
+    case ParamKind::Color: return "color";
+    case ParamKind::Vector3: return "vector3";
+  }
+  return "scalar";
+}
+
+std::span<const ParamSpec> parameterSchema() { return kSchema; }
+
+std::optional<std::size_t> parameterIndex(std::string_view id) {
+  for (std::size_t i = 0; i < std::size(kSchema); ++i) {
+    if (kSchema[i].id == id) return i;
+  }
+  return std::nullopt;
+}
+
+const ParamSpec* findParameter(std::string_view id) {
+  const auto index = parameterIndex(id);
+  return index ? &kSchema[*index] : nullptr;
+}
+
+std::span<float> WoodParameters::components(std::size_t index) {
+  std::size_t i = 0;
+#define KERF_PARAM(name, id, group, label, unit, kind, def, smin, smax, hmin, hmax, fit, tip) \
+  if (i++ == index) return {componentPointer(name), static_cast<std::size_t>(kSchema[index].components())};
+#include "params/wood_parameters.def"
+#undef KERF_PARAM
+  throw std::out_of_range("parameter index out of range");
+}
+
+std::span<const float> WoodParameters::components(std::size_t index) const {
+  const auto values = const_cast<WoodParameters*>(this)->components(index);
+  return {values.data(), values.size()};
+}
+
+void validate(const WoodParameters& params) {
+  const auto schema = parameterSchema();
+  for (std::size_t i = 0; i < schema.size(); ++i) {
+    const ParamSpec& spec = schema[i];
+    for (float v : params.components(i)) {
+      if (!std::isfinite(v)) {
+        throw InputError("parameter " + std::string(spec.id) + " is not a finite number");
+      }
+      if (v < spec.hardMin || v > spec.hardMax) {
+        std::ostringstream message;
+        message << "parameter " << spec.id << " = " << v << " is outside its allowed range [" << spec.hardMin
+                << ", " << spec.hardMax << "]" << (spec.unit.empty() ? "" : " ") << spec.unit;
+        throw InputError(message.str());
+      }
+      if (spec.kind == ParamKind::Integer && v != std::floor(v)) {
+        throw InputError("parameter " + std::string(spec.id) + " must be a whole number");
+      }
+    }
+  }
+}
+
+std::string glslUniformDeclarations() {
+  std::ostringstream out;
+  out << "// Generated from core/params/wood_parameters.def: one uniform per procedural parameter.\n";
+  for (const ParamSpec& spec : parameterSchema()) {
+    out << "uniform " << (spec.components() == 3 ? "vec3" : "float") << " u_" << spec.name << ";  // "
+        << spec.id << (spec.unit.empty() ? "" : " [") << spec.unit << (spec.unit.empty() ? "" : "]") << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace kerf

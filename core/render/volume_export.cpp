@@ -1,0 +1,97 @@
+#include "render/volume_export.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "io/nrrd_writer.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace kerf {
+
+VolumeQuantity volumeQuantityFromName(std::string_view name) {
+  if (name == "growth") return VolumeQuantity::Growth;
+  if (name == "color" || name == "colour") return VolumeQuantity::Color;
+  throw InputError("unknown volume quantity \"" + std::string(name) + "\" (use growth or color)");
+}
+
+VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
+                                const std::filesystem::path& path, const Progress& progress) {
+  if (resolution < 1 || resolution > 4096) throw InputError("volume resolution must be 1..4096 samples");
+  const glm::vec3 size = model.block().size();
+  const float longest = std::max({size.x, size.y, size.z});
+  glm::ivec3 n;
+  for (int a = 0; a < 3; ++a) n[a] = std::max(1, static_cast<int>(std::lround(resolution * size[a] / longest)));
+  const glm::vec3 spacing = size / glm::vec3(n);
+  const glm::vec3 origin = -0.5f * size + 0.5f * spacing;
+
+  NrrdLayout layout;
+  layout.size = n;
+  layout.spacing = spacing;
+  layout.origin = origin;
+  layout.keyValues.emplace_back("generator", "Kerf");
+  const bool growth = quantity == VolumeQuantity::Growth;
+  if (growth) {
+    layout.type = NrrdLayout::Type::Float32;
+    layout.comment = "Kerf growth field: years since the pith at each sample (block frame, mm)";
+    layout.keyValues.emplace_back("quantity", "growth");
+    layout.keyValues.emplace_back("units", "years");
+    // Ring levels over the field's range in the block: a coarse pass, widened by one ring each way.
+    float lo = std::numeric_limits<float>::max(), hi = -lo;
+    constexpr int m = 16;
+    for (int i = 0; i <= m; ++i)
+      for (int j = 0; j <= m; ++j)
+        for (int k = 0; k <= m; ++k) {
+          const float g = model.material().year(-0.5f * size + size * glm::vec3(i, j, k) / float(m));
+          lo = std::min(lo, g), hi = std::max(hi, g);
+        }
+    std::ostringstream levels;
+    levels.precision(7);
+    for (float level : ringLevels(model.params().ringOffset, std::max(0.0f, lo - 1.0f), hi + 1.0f)) {
+      levels << (levels.tellp() > 0 ? " " : "") << level;
+    }
+    layout.keyValues.emplace_back("ring_levels", levels.str());
+  } else {
+    layout.type = NrrdLayout::Type::UInt8;
+    layout.components = 3;
+    layout.comment = "Kerf wood colour (sRGB-encoded 8-bit) in the block frame";
+    layout.keyValues.emplace_back("quantity", "color");
+  }
+
+  NrrdWriter writer(path, layout);
+  const std::size_t sliceSamples = static_cast<std::size_t>(n.x) * n.y;
+  std::vector<float> floats(growth ? sliceSamples : 0);
+  std::vector<std::uint8_t> bytes(growth ? 0 : sliceSamples * 3);
+  for (int z = 0; z < n.z; ++z) {
+    progress.throwIfCancelled();
+    const float pz = origin.z + z * spacing.z;
+    parallelRows(n.y, [&](int y) {
+      const float py = origin.y + y * spacing.y;
+      for (int x = 0; x < n.x; ++x) {
+        const glm::vec3 p(origin.x + x * spacing.x, py, pz);
+        const std::size_t i = static_cast<std::size_t>(y) * n.x + x;
+        if (growth) {
+          floats[i] = model.material().year(p);
+        } else {
+          const glm::vec3 c = model.evaluate(p).color;
+          for (int ch = 0; ch < 3; ++ch) bytes[i * 3 + ch] = static_cast<std::uint8_t>(std::lround(c[ch] * 255.0f));
+        }
+      }
+    }, {nullptr, progress.stop});
+    if (growth) writer.writeSlice(std::span<const float>(floats));
+    else writer.writeSlice(std::span<const std::uint8_t>(bytes));
+    progress.set(static_cast<double>(z + 1) / n.z);
+  }
+  writer.finish();
+  VolumeExportResult result;
+  result.size = n;
+  result.spacingMm = spacing;
+  result.samples = sliceSamples * n.z;
+  result.bytes = result.samples * (growth ? 4 : 3);
+  return result;
+}
+
+}  // namespace kerf

@@ -1,0 +1,30 @@
+#pragma once
+// Volumes of the wood model written as NRRD (io/nrrd_writer.hpp), streamed one z slice at a time so
+// a 512^3 volume needs memory for one slice, not the volume.
+#include <filesystem>
+#include <string_view>
+
+#include "render/wood_model.hpp"
+#include "util/progress.hpp"
+
+namespace kerf {
+
+enum class VolumeQuantity {
+  Growth,  // float32: growth time in years (WoodSample::year); header key ring_levels lists the ring iso-values
+  Color,   // uint8 RGB
+};
+VolumeQuantity volumeQuantityFromName(std::string_view name);  // "growth" | "color"; InputError otherwise
+
+struct VolumeExportResult {
+  glm::ivec3 size{0};
+  glm::vec3 spacingMm{0};
+  std::size_t samples = 0;
+  std::size_t bytes = 0;
+};
+
+// `resolution` samples along the block's longest side (1..4096); the other sides get the same spacing,
+// rounded to whole samples. Samples sit at voxel centres covering the block exactly.
+VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
+                                const std::filesystem::path& path, const Progress& progress = {});
+
+}  // namespace kerf

@@ -1,0 +1,18 @@
+#pragma once
+// Row-parallel loops for the renderers: OpenCV's thread pool (cv::parallel_for_), cancellable and
+// reporting progress. cv::setNumThreads() decides the thread count (kerf-cli --threads, benchmarks).
+#include <functional>
+
+#include "util/progress.hpp"
+
+namespace kerf {
+
+// Calls body(row) for every row in [0, rows), spread over threads. Stops early (throws Cancelled)
+// when progress.stop is requested; reports the fraction of rows done.
+void parallelRows(int rows, const std::function<void(int row)>& body, const Progress& progress = {});
+
+// Sets the number of worker threads (0 = all cores).
+void setWorkerThreads(int threads);
+int workerThreads();
+
+}  // namespace kerf
