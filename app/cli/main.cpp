@@ -189,11 +189,11 @@ int main(int argc, char** argv) {
                   result.size.x, result.size.y, result.size.z, result.spacingMm.x, result.bytes / 1048576.0);
       stats.print("export-volume");
     } else if (*params) {
-      nlohmann::json out = nlohmann::json::array();
+      nlohmann::ordered_json out = nlohmann::ordered_json::array();
       for (const ParamSpec& spec : parameterSchema()) {
-        nlohmann::json def = spec.components() == 1
-                                 ? nlohmann::json(spec.defaultValue[0])
-                                 : nlohmann::json::array({spec.defaultValue[0], spec.defaultValue[1], spec.defaultValue[2]});
+        nlohmann::ordered_json def = spec.components() == 1
+                                 ? nlohmann::ordered_json(spec.defaultValue[0])
+                                 : nlohmann::ordered_json::array({spec.defaultValue[0], spec.defaultValue[1], spec.defaultValue[2]});
         out.push_back({{"id", spec.id},
                        {"group", spec.group},
                        {"label", spec.label},

@@ -1,0 +1,55 @@
+// Cutting planes: their 2D frame and their intersection with the block.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/cut_plane.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+
+TEST(CutPlane, FrameIsOrthonormalAndRightHanded) {
+  for (glm::vec3 n : {glm::vec3(1, 2, 3), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0.2f), glm::vec3(-1, 0, 0)}) {
+    const CutPlane plane({1, 2, 3}, n);
+    EXPECT_NEAR(glm::length(plane.right()), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(plane.up()), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(plane.right(), plane.up()), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(plane.right(), plane.normal()), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(glm::cross(plane.right(), plane.up()), plane.normal()), 1.0f, 1e-5f);
+    const glm::vec3 p = plane.toBlock({2.5f, -1.0f});
+    const glm::vec2 q = plane.toPlane(p);
+    EXPECT_NEAR(q.x, 2.5f, 1e-5f);
+    EXPECT_NEAR(q.y, -1.0f, 1e-5f);
+  }
+}
+
+TEST(CutPlane, PlaneThroughAFaceIsOrientedLikeTheFaceImage) {
+  const Block block(glm::vec3(40.0f));
+  for (FaceId face : kAllFaces) {
+    const FaceFrame f = block.face(face);
+    const CutPlane plane(f.center, f.normal);
+    EXPECT_NEAR(glm::dot(plane.right(), f.right), 1.0f, 1e-5f) << faceLetter(face);
+    EXPECT_NEAR(glm::dot(plane.up(), -f.down), 1.0f, 1e-5f) << faceLetter(face);
+  }
+}
+
+TEST(CutPlane, BoundsOfAxisAlignedAndDiagonalCuts) {
+  const Block block(glm::vec3(40.0f, 30.0f, 20.0f));
+  const auto straight = CutPlane({0, 0, 0}, {0, 0, 1}).boundsInBlock(block);
+  ASSERT_TRUE(straight);
+  EXPECT_NEAR(straight->max.x - straight->min.x, 40.0f, 1e-4f);
+  EXPECT_NEAR(straight->max.y - straight->min.y, 30.0f, 1e-4f);
+  // A 45 degree cut through the centre of a cube spans the face diagonal one way and a side the other.
+  const auto diagonal = CutPlane({0, 0, 0}, {1, 0, 1}).boundsInBlock(Block(glm::vec3(40.0f)));
+  ASSERT_TRUE(diagonal);
+  EXPECT_NEAR(diagonal->max.x - diagonal->min.x, 40.0f * std::sqrt(2.0f), 1e-3f);
+  EXPECT_NEAR(diagonal->max.y - diagonal->min.y, 40.0f, 1e-3f);
+  EXPECT_FALSE(CutPlane({0, 0, 50}, {0, 0, 1}).boundsInBlock(block));
+}
+
+TEST(CutPlane, RejectsDegenerateInput) {
+  EXPECT_THROW(CutPlane({0, 0, 0}, {0, 0, 0}), InputError);
+  EXPECT_THROW(CutPlane({std::nanf(""), 0, 0}, {0, 0, 1}), InputError);
+}

@@ -1,0 +1,144 @@
+// Project files: round trips, relative photo paths, versions, malformed input, atomic saves.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "io/project.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "project" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+std::string loadError(const fs::path& path) {
+  try {
+    loadProject(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Project, RoundTripKeepsEverySchemaValueAndTheRates) {
+  const fs::path dir = scratch("roundtrip");
+  Project project;
+  project.block = Block(glm::vec3(40, 30, 20));
+  project.params.ringWidth = 1.75f;
+  project.params.latewoodColor = {0.3f, 0.2f, 0.1f};
+  project.params.pithOrigin = {1.5f, -2.0f, -80.0f};
+  project.params.seed = 12345;
+  project.rates = synthesizeGrowthRates(project.params, project.block);
+  project.rates->at(1, 2, 3) = -0.5f;
+  project.facePhotos[0] = dir / "photos" / "A_col.png";
+  project.facePhotos[4] = dir / "E.jpg";
+  saveProject(project, dir / "p.kerf");
+
+  const Project loaded = loadProject(dir / "p.kerf");
+  EXPECT_EQ(loaded.params, project.params);
+  EXPECT_EQ(loaded.block.size(), project.block.size());
+  ASSERT_TRUE(loaded.rates);
+  EXPECT_EQ(loaded.rates->rates, project.rates->rates);
+  EXPECT_EQ(loaded.facePhotos[0], project.facePhotos[0]);
+  EXPECT_EQ(loaded.facePhotos[4], project.facePhotos[4]);
+  EXPECT_TRUE(loaded.facePhotos[1].empty());
+
+  // Photo paths are stored relative to the project, so a moved folder still opens.
+  std::ifstream in(dir / "p.kerf");
+  const nlohmann::json json = nlohmann::json::parse(in);
+  EXPECT_EQ(json["faces"]["A"]["photo"], "photos/A_col.png");
+  EXPECT_EQ(json["version"], kProjectFormatVersion);
+  fs::remove_all(dir.parent_path() / "moved");
+  fs::rename(dir, dir.parent_path() / "moved");
+  const Project moved = loadProject(dir.parent_path() / "moved" / "p.kerf");
+  EXPECT_EQ(moved.facePhotos[0], dir.parent_path() / "moved" / "photos" / "A_col.png");
+}
+
+TEST(Project, SavingIsAtomicAndLeavesNoTemporaryFiles) {
+  const fs::path dir = scratch("atomic");
+  Project project;
+  saveProject(project, dir / "p.kerf");
+  project.params.ringWidth = 5.0f;
+  saveProject(project, dir / "p.kerf");
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    ++files;
+    EXPECT_EQ(entry.path().filename(), "p.kerf");
+  }
+  EXPECT_EQ(files, 1);
+  EXPECT_FLOAT_EQ(loadProject(dir / "p.kerf").params.ringWidth, 5.0f);
+  EXPECT_THROW(saveProject(project, dir / "missing-folder" / "p.kerf"), InputError);
+}
+
+TEST(Project, MissingParametersTakeDefaults) {
+  const fs::path dir = scratch("defaults");
+  writeText(dir / "p.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": 2}})");
+  const Project project = loadProject(dir / "p.kerf");
+  EXPECT_FLOAT_EQ(project.params.ringWidth, 2.0f);
+  EXPECT_EQ(project.params.latewoodColor, WoodParameters{}.latewoodColor);
+  EXPECT_FALSE(project.rates);
+}
+
+TEST(Project, ClearErrorsForBadFiles) {
+  const fs::path dir = scratch("errors");
+  EXPECT_NE(loadError(dir / "nope.kerf").find("not found"), std::string::npos);
+
+  writeText(dir / "broken.kerf", R"({"format": "kerf-project", "version": 1,)");
+  EXPECT_NE(loadError(dir / "broken.kerf").find("not valid JSON"), std::string::npos);
+
+  writeText(dir / "other.kerf", R"({"hello": 1})");
+  EXPECT_NE(loadError(dir / "other.kerf").find("not a Kerf project"), std::string::npos);
+
+  writeText(dir / "newer.kerf", R"({"format": "kerf-project", "version": 99})");
+  EXPECT_NE(loadError(dir / "newer.kerf").find("newer Kerf"), std::string::npos);
+
+  writeText(dir / "nan.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": null}})");
+  EXPECT_NE(loadError(dir / "nan.kerf").find("growth.ring_width"), std::string::npos);
+
+  writeText(dir / "range.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"rays.density": 7}})");
+  EXPECT_NE(loadError(dir / "range.kerf").find("outside its allowed range"), std::string::npos);
+
+  writeText(dir / "unknown.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"rings.wobble": 1}})");
+  EXPECT_NE(loadError(dir / "unknown.kerf").find("unknown parameter"), std::string::npos);
+
+  writeText(dir / "color.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"color.earlywood": [1, 2]}})");
+  EXPECT_NE(loadError(dir / "color.kerf").find("3 numbers"), std::string::npos);
+
+  writeText(dir / "block.kerf", R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [0, 1, 1]}})");
+  EXPECT_NE(loadError(dir / "block.kerf").find("block size"), std::string::npos);
+
+  writeText(dir / "grid.kerf",
+            R"({"format": "kerf-project", "version": 1, "growth_rates": {"heights": 1, "azimuths": 1, "radii": 2,
+                "height_range_mm": [0, 1], "radius_range_mm": [0, 5], "rates": [1]}})");
+  EXPECT_NE(loadError(dir / "grid.kerf").find("expected 2"), std::string::npos);
+
+  writeText(dir / "face.kerf", R"({"format": "kerf-project", "version": 1, "faces": {"G": {"photo": "x.png"}}})");
+  EXPECT_NE(loadError(dir / "face.kerf").find("unknown face"), std::string::npos);
+}
+
+TEST(Project, SampleFolderFindsFacePhotos) {
+  const fs::path dir = scratch("sample");
+  EXPECT_THROW(projectFromSampleFolder(dir), InputError);
+  writeText(dir / "A_col.png", "x");
+  writeText(dir / "D_col.jpg", "x");
+  const Project project = loadDocument(dir);
+  EXPECT_EQ(project.facePhotos[0].filename(), "A_col.png");
+  EXPECT_EQ(project.facePhotos[3].filename(), "D_col.jpg");
+  EXPECT_TRUE(project.facePhotos[1].empty());
+  EXPECT_EQ(project.block.size(), glm::vec3(40.0f));
+}
