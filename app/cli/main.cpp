@@ -28,9 +28,11 @@ struct Stats {
   void print(const std::string& command) const {
     if (!enabled) return;
     const double s = clock.seconds();
-    std::fprintf(stderr, "stats: command=%s wall=%.3f s threads=%d samples=%zu throughput=%.3g samples/s peak_rss=%.1f MiB\n",
-                 command.c_str(), s, workerThreads(), samples, s > 0 ? samples / s : 0.0,
-                 peakResidentBytes() / (1024.0 * 1024.0));
+    std::fprintf(
+        stderr,
+        "stats: command=%s wall=%.3f s threads=%d samples=%zu throughput=%.3g samples/s peak_rss=%.1f MiB\n",
+        command.c_str(), s, workerThreads(), samples, s > 0 ? samples / s : 0.0,
+        peakResidentBytes() / (1024.0 * 1024.0));
   }
 };
 
@@ -61,7 +63,8 @@ CutPlane parsePlane(const std::string& text) {
       throw InputError("--plane: \"" + item + "\" is not a number");
     }
   }
-  if (v.size() != 6) throw InputError("--plane takes 6 numbers: px,py,pz,nx,ny,nz (a point and a normal, block mm)");
+  if (v.size() != 6)
+    throw InputError("--plane takes 6 numbers: px,py,pz,nx,ny,nz (a point and a normal, block mm)");
   return CutPlane({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
 }
 
@@ -82,7 +85,8 @@ Progress consoleProgress(bool quiet) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"kerf-cli: Kerf's wood model, headless (demo, render-faces, render-cut, export-volume, params)"};
+  CLI::App app{
+      "kerf-cli: Kerf's wood model, headless (demo, render-faces, render-cut, export-volume, params)"};
   app.require_subcommand(1);
   Stats stats;
   int threads = 0;
@@ -92,7 +96,8 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "No progress output");
 
   // demo
-  auto* demo = app.add_subcommand("demo", "Write the bundled demo block: six face photos, true parameters, a project");
+  auto* demo =
+      app.add_subcommand("demo", "Write the bundled demo block: six face photos, true parameters, a project");
   std::string demoOut;
   DemoOptions demoOptions;
   demo->add_option("--out", demoOut, "Output folder (created if needed)")->required();
@@ -117,7 +122,8 @@ int main(int argc, char** argv) {
   faces->add_flag("--unfolded", facesCross, "Also write unfolded.png: the faces in the Mokume cross layout");
 
   // render-cut
-  auto* cut = app.add_subcommand("render-cut", "Render the cut surface of a plane through the block (RGBA PNG)");
+  auto* cut =
+      app.add_subcommand("render-cut", "Render the cut surface of a plane through the block (RGBA PNG)");
   std::string cutDoc, cutPlaneText, cutOut;
   float cutPxPerMm = 10.0f;
   int cutSamples = 2;
@@ -135,7 +141,8 @@ int main(int argc, char** argv) {
   volume->add_option("PROJECT", volumeDoc, "A .kerf project or a Mokume-style sample folder")->required();
   volume->add_option("--quantity", volumeQuantity, "growth (float years) or color (uint8 RGB)")
       ->check(CLI::IsMember({"growth", "color"}));
-  volume->add_option("--res", volumeRes, "Samples along the block's longest side")->check(CLI::Range(1, 4096));
+  volume->add_option("--res", volumeRes, "Samples along the block's longest side")
+      ->check(CLI::Range(1, 4096));
   volume->add_option("--out", volumeOut, "Output .nrrd file")->required();
 
   // params
@@ -154,8 +161,10 @@ int main(int argc, char** argv) {
       const DemoFiles files = writeDemo(demoOut, demoOptions, consoleProgress(quiet));
       stats.samples = static_cast<std::size_t>(6) * demoOptions.facePixels * demoOptions.facePixels *
                       demoOptions.samples * demoOptions.samples;
-      std::printf("demo block written to %s\n  photos:  A_col.png .. F_col.png\n  truth:   %s\n  project: %s\n",
-                  fs::path(demoOut).string().c_str(), files.truth.filename().c_str(), files.project.filename().c_str());
+      std::printf(
+          "demo block written to %s\n  photos:  A_col.png .. F_col.png\n  truth:   %s\n  project: %s\n",
+          fs::path(demoOut).string().c_str(), files.truth.filename().c_str(),
+          files.project.filename().c_str());
       stats.print("demo");
     } else if (*faces) {
       const Project project = loadDocument(facesDoc);
@@ -168,7 +177,8 @@ int main(int argc, char** argv) {
         stats.samples += static_cast<std::size_t>(image.width) * image.height * facesSamples * facesSamples;
       }
       if (facesCross) writeImage(fs::path(facesOut) / "unfolded.png", unfoldedCross(images, model.block()));
-      std::printf("faces written to %s (A.png .. F.png%s)\n", facesOut.c_str(), facesCross ? ", unfolded.png" : "");
+      std::printf("faces written to %s (A.png .. F.png%s)\n", facesOut.c_str(),
+                  facesCross ? ", unfolded.png" : "");
       stats.print("render-faces");
     } else if (*cut) {
       const CutPlane plane = parsePlane(cutPlaneText);
@@ -177,23 +187,26 @@ int main(int argc, char** argv) {
       const Image image = renderCut(model, plane, cutPxPerMm, cutSamples, consoleProgress(quiet));
       writeImage(cutOut, image);
       stats.samples = static_cast<std::size_t>(image.width) * image.height * cutSamples * cutSamples;
-      std::printf("cut written to %s (%dx%d px, %.3g px/mm)\n", cutOut.c_str(), image.width, image.height, cutPxPerMm);
+      std::printf("cut written to %s (%dx%d px, %.3g px/mm)\n", cutOut.c_str(), image.width, image.height,
+                  cutPxPerMm);
       stats.print("render-cut");
     } else if (*volume) {
       const Project project = loadDocument(volumeDoc);
       const WoodModel model(project);
-      const VolumeExportResult result =
-          exportVolume(model, volumeQuantityFromName(volumeQuantity), volumeRes, volumeOut, consoleProgress(quiet));
+      const VolumeExportResult result = exportVolume(model, volumeQuantityFromName(volumeQuantity), volumeRes,
+                                                     volumeOut, consoleProgress(quiet));
       stats.samples = result.samples;
-      std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n", volumeOut.c_str(),
-                  result.size.x, result.size.y, result.size.z, result.spacingMm.x, result.bytes / 1048576.0);
+      std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
+                  volumeOut.c_str(), result.size.x, result.size.y, result.size.z, result.spacingMm.x,
+                  result.bytes / 1048576.0);
       stats.print("export-volume");
     } else if (*params) {
       nlohmann::ordered_json out = nlohmann::ordered_json::array();
       for (const ParamSpec& spec : parameterSchema()) {
-        nlohmann::ordered_json def = spec.components() == 1
-                                 ? nlohmann::ordered_json(spec.defaultValue[0])
-                                 : nlohmann::ordered_json::array({spec.defaultValue[0], spec.defaultValue[1], spec.defaultValue[2]});
+        nlohmann::ordered_json def =
+            spec.components() == 1 ? nlohmann::ordered_json(spec.defaultValue[0])
+                                   : nlohmann::ordered_json::array(
+                                         {spec.defaultValue[0], spec.defaultValue[1], spec.defaultValue[2]});
         out.push_back({{"id", spec.id},
                        {"group", spec.group},
                        {"label", spec.label},
@@ -207,6 +220,7 @@ int main(int argc, char** argv) {
                        {"tooltip", spec.tooltip}});
       }
       std::cout << out.dump(2) << "\n";
+      stats.print("params");
     }
   } catch (const InputError& e) {
     std::fprintf(stderr, "kerf-cli: error: %s\n", e.what());

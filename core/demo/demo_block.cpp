@@ -38,13 +38,15 @@ void applyPhotoLook(Image& image, FaceId face, std::uint32_t seed) {
       const glm::vec2 q((x + 0.5f) / image.width - 0.5f, (y + 0.5f) / image.height - 0.5f);
       const float light = exposure * (1.0f + 0.12f * glm::dot(q, lightDir)) * (1.0f - 0.16f * glm::dot(q, q));
       float* px = image.pixel(x, y);
-      for (int c = 0; c < 3; ++c) px[c] = std::clamp(px[c] * light * whiteBalance[c] + sensor(random), 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c)
+        px[c] = std::clamp(px[c] * light * whiteBalance[c] + sensor(random), 0.0f, 1.0f);
     }
   }
 }
 
 DemoFiles writeDemo(const fs::path& folder, const DemoOptions& options, const Progress& progress) {
-  if (options.facePixels < 8 || options.facePixels > 8192) throw InputError("demo face size must be 8..8192 pixels");
+  if (options.facePixels < 8 || options.facePixels > 8192)
+    throw InputError("demo face size must be 8..8192 pixels");
   std::error_code error;
   fs::create_directories(folder, error);
   if (!fs::is_directory(folder)) throw InputError("cannot create folder " + folder.string());
@@ -54,9 +56,11 @@ DemoFiles writeDemo(const fs::path& folder, const DemoOptions& options, const Pr
   DemoFiles files;
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
-    Progress part{progress.report ? [&, i](double f) { progress.report((i + f) / 6.0); } : std::function<void(double)>{},
+    Progress part{progress.report ? [&, i](double f) { progress.report((i + f) / 6.0); }
+                                  : std::function<void(double)>{},
                   progress.stop};
-    const glm::ivec2 size = model.block().faceImageSize(face, options.facePixels / model.block().face(face).widthMm);
+    const glm::ivec2 size =
+        model.block().faceImageSize(face, options.facePixels / model.block().face(face).widthMm);
     Image image = renderFace(model, face, size, options.samples, part);
     if (options.photoLook) applyPhotoLook(image, face, options.seed);
     files.photos[i] = folder / (std::string(1, faceLetter(face)) + "_col.png");

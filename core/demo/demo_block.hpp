@@ -32,6 +32,7 @@ struct DemoFiles {
 };
 
 // Writes the demo into `folder` (created if needed). Throws InputError, Cancelled.
-DemoFiles writeDemo(const std::filesystem::path& folder, const DemoOptions& options = {}, const Progress& progress = {});
+DemoFiles writeDemo(const std::filesystem::path& folder, const DemoOptions& options = {},
+                    const Progress& progress = {});
 
 }  // namespace kerf

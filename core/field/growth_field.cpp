@@ -10,8 +10,8 @@
 namespace kerf {
 
 GrowthField::GrowthField(const WoodParameters& params, const GrowthRates& rates)
-    : GrowthField(PithAxis::fromAngles(params.pithOrigin, params.pithTilt, params.pithAzimuth), params.ringWidth,
-                  rates) {}
+    : GrowthField(PithAxis::fromAngles(params.pithOrigin, params.pithTilt, params.pithAzimuth),
+                  params.ringWidth, rates) {}
 
 GrowthField::GrowthField(const PithAxis& axis, float ringWidthMm, const GrowthRates& rates)
     : axis_(axis), ringWidth_(ringWidthMm), rates_(rates) {
@@ -52,28 +52,47 @@ float GrowthField::radialValue(int ih, int ia, float r) const {
   return node(ih, ia, ir) + t * (node(ih, ia, ir + 1) - node(ih, ia, ir));
 }
 
-float GrowthField::evaluate(const Cylindrical& c) const {
-  // Height: linear between levels, constant beyond the first/last level.
-  float fh = 0.0f;
-  if (rates_.heights > 1) {
-    fh = (c.height - rates_.heightMin) / (rates_.heightMax - rates_.heightMin) * (rates_.heights - 1);
-    fh = std::clamp(fh, 0.0f, static_cast<float>(rates_.heights - 1));
-  }
-  const int ih0 = std::min(static_cast<int>(fh), rates_.heights - 1);
-  const int ih1 = std::min(ih0 + 1, rates_.heights - 1);
-  const float th = fh - ih0;
-  // Azimuth: n_a spokes evenly around the full circle, periodic.
-  float fa = (c.azimuth + std::numbers::pi_v<float>) * (rates_.azimuths / (2.0f * std::numbers::pi_v<float>));
-  fa = std::clamp(fa, 0.0f, static_cast<float>(rates_.azimuths));
-  int ia0 = static_cast<int>(fa);
-  const float ta = fa - ia0;
-  ia0 %= rates_.azimuths;
-  const int ia1 = (ia0 + 1) % rates_.azimuths;
+namespace {
 
-  const float g00 = radialValue(ih0, ia0, c.radius), g01 = radialValue(ih0, ia1, c.radius);
-  const float g10 = radialValue(ih1, ia0, c.radius), g11 = radialValue(ih1, ia1, c.radius);
-  const float g0 = g00 + ta * (g01 - g00), g1 = g10 + ta * (g11 - g10);
-  return g0 + th * (g1 - g0);
+// Uniform cubic B-spline weights: non-negative and summing to 1, so G stays monotone along the radius,
+// and C2 across spokes and height levels (trilinear weights leave a visible corner in the rings on
+// faces nearly tangent to them, at every spoke).
+void bsplineWeights(float t, float w[4]) {
+  const float s = 1.0f - t, t2 = t * t, t3 = t2 * t;
+  w[0] = s * s * s / 6.0f;
+  w[1] = (3.0f * t3 - 6.0f * t2 + 4.0f) / 6.0f;
+  w[2] = (-3.0f * t3 + 3.0f * t2 + 3.0f * t + 1.0f) / 6.0f;
+  w[3] = t3 / 6.0f;
+}
+
+}  // namespace
+
+float GrowthField::evaluate(const Cylindrical& c) const {
+  // Height: clamped B-spline over the levels; constant beyond the first/last level.
+  const int nh = rates_.heights, na = rates_.azimuths;
+  float fh = 0.0f;
+  if (nh > 1) {
+    fh = (c.height - rates_.heightMin) / (rates_.heightMax - rates_.heightMin) * (nh - 1);
+    fh = std::clamp(fh, 0.0f, static_cast<float>(nh - 1));
+  }
+  const int ih = std::min(static_cast<int>(fh), nh - 1);
+  float wh[4];
+  bsplineWeights(fh - ih, wh);
+  // Azimuth: n_a spokes evenly around the full circle, periodic B-spline.
+  float fa = (c.azimuth + std::numbers::pi_v<float>)*(na / (2.0f * std::numbers::pi_v<float>));
+  fa = std::clamp(fa, 0.0f, static_cast<float>(na));
+  const int ia = static_cast<int>(fa);
+  float wa[4];
+  bsplineWeights(fa - ia, wa);
+
+  float g = 0.0f;
+  for (int i = 0; i < 4; ++i) {
+    const int h = std::clamp(ih - 1 + i, 0, nh - 1);
+    float row = 0.0f;
+    for (int j = 0; j < 4; ++j) row += wa[j] * radialValue(h, ((ia - 1 + j) % na + na) % na, c.radius);
+    g += wh[i] * row;
+  }
+  return g;
 }
 
 std::vector<float> ringLevels(float ringOffset, float gMin, float gMax) {

@@ -4,11 +4,13 @@
 // at the ring levels A (here growth.ring_offset + k for whole k).
 //
 // Construction: the rates R (clamped at 0) are integrated along the radius from the pith into a
-// table C of n_h x n_a x (n_r + 1) values (G at every radial node). Between nodes G is trilinear in
-// (height, azimuth, radius) -- exactly the integral of the bilinearly interpolated, radially
-// piecewise-constant rate -- so G is continuous, and monotone along every radius. Inside the first
-// node (r < radiusMin) G falls linearly to 0 at the pith; beyond the last it continues with the last
-// rate; above/below the height range it is constant along the axis; the azimuth is periodic.
+// table C of n_h x n_a x (n_r + 1) values (G at every radial node). Along the radius G is linear
+// between nodes, as in the paper. Across heights and spokes Kerf blends the columns with uniform
+// cubic B-spline weights instead of the paper's (bi)linear ones: the weights are non-negative and sum
+// to one, so G is still continuous and monotone along every radius, but rings no longer show a corner
+// at every spoke on faces nearly tangent to them. Inside the first node (r < radiusMin) G falls
+// linearly to 0 at the pith; beyond the last it continues with the last rate; above/below the height
+// range it is constant along the axis; the azimuth is periodic.
 #include <vector>
 
 #include "field/growth_rates.hpp"

@@ -14,8 +14,8 @@ namespace kerf {
 
 void GrowthRates::validate() const {
   if (heights < 1 || azimuths < 1 || radii < 1 || heights > 256 || azimuths > 256 || radii > 256) {
-    throw InputError("growth-rate grid sizes must be between 1 and 256, got " + std::to_string(heights) + " x " +
-                     std::to_string(azimuths) + " x " + std::to_string(radii));
+    throw InputError("growth-rate grid sizes must be between 1 and 256, got " + std::to_string(heights) +
+                     " x " + std::to_string(azimuths) + " x " + std::to_string(radii));
   }
   if (rates.size() != static_cast<std::size_t>(heights) * azimuths * radii) {
     throw InputError("growth-rate grid holds " + std::to_string(rates.size()) + " values, expected " +
@@ -32,7 +32,8 @@ void GrowthRates::validate() const {
   }
 }
 
-GrowthRates GrowthRates::uniform(const Block& block, const PithAxis& axis, int heights, int azimuths, int radii) {
+GrowthRates GrowthRates::uniform(const Block& block, const PithAxis& axis, int heights, int azimuths,
+                                 int radii) {
   // Range of heights and radii over the block, sampled on a grid (the axis may pass through the block).
   float hLo = std::numeric_limits<float>::max(), hHi = -hLo, rLo = hLo, rHi = 0;
   constexpr int n = 12;
@@ -61,7 +62,8 @@ GrowthRates synthesizeGrowthRates(const WoodParameters& params, const Block& blo
   const float eccentricAngle = params.eccentricityDirection * std::numbers::pi_v<float> / 180.0f;
   const float radialStep = (g.radiusMax - g.radiusMin) / g.radii;
   for (int ih = 0; ih < g.heights; ++ih) {
-    const float h = g.heights > 1 ? g.heightMin + ih * (g.heightMax - g.heightMin) / (g.heights - 1) : g.heightMin;
+    const float h =
+        g.heights > 1 ? g.heightMin + ih * (g.heightMax - g.heightMin) / (g.heights - 1) : g.heightMin;
     for (int ia = 0; ia < g.azimuths; ++ia) {
       const float theta = -std::numbers::pi_v<float> + ia * 2.0f * std::numbers::pi_v<float> / g.azimuths;
       // Waviness: smooth noise on a circle (periodic in theta) that drifts slowly along the trunk.

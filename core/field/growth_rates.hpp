@@ -20,7 +20,9 @@ struct GrowthRates {
   float radiusMin = 0, radiusMax = 1;          // mm from the pith: the radial cells span this range
   std::vector<float> rates;                    // heights*azimuths*radii, index (ih*azimuths + ia)*radii + ir
 
-  float& at(int ih, int ia, int ir) { return rates[(static_cast<std::size_t>(ih) * azimuths + ia) * radii + ir]; }
+  float& at(int ih, int ia, int ir) {
+    return rates[(static_cast<std::size_t>(ih) * azimuths + ia) * radii + ir];
+  }
   float at(int ih, int ia, int ir) const {
     return rates[(static_cast<std::size_t>(ih) * azimuths + ia) * radii + ir];
   }

@@ -22,8 +22,10 @@ PithAxis PithAxis::fromDirection(glm::vec3 origin, glm::vec3 direction) {
   const glm::vec3 d = axis.direction;
   // Least-aligned block axis; ties prefer z, then x (so a pith along y has azimuth 0 towards +z).
   glm::vec3 e(0, 0, 1);
-  if (std::abs(d.x) < std::abs(d.z) && std::abs(d.x) <= std::abs(d.y)) e = {1, 0, 0};
-  else if (std::abs(d.y) < std::abs(d.z) && std::abs(d.y) < std::abs(d.x)) e = {0, 1, 0};
+  if (std::abs(d.x) < std::abs(d.z) && std::abs(d.x) <= std::abs(d.y))
+    e = {1, 0, 0};
+  else if (std::abs(d.y) < std::abs(d.z) && std::abs(d.y) < std::abs(d.x))
+    e = {0, 1, 0};
   axis.reference = glm::normalize(e - glm::dot(e, d) * d);
   axis.binormal = glm::cross(d, axis.reference);
   return axis;

@@ -8,9 +8,9 @@
 namespace kerf {
 
 struct Cylindrical {
-  float height;    // mm along V from O
-  float radius;    // mm from the axis line
-  float azimuth;   // radians in (-pi, pi], measured from PithAxis::reference towards binormal
+  float height;          // mm along V from O
+  float radius;          // mm from the axis line
+  float azimuth;         // radians in (-pi, pi], measured from PithAxis::reference towards binormal
   glm::vec3 radial;      // unit vector from the axis to the point (reference when on the axis)
   glm::vec3 tangential;  // unit vector V x radial: direction of increasing azimuth
   float x, y;            // cross-section coordinates: radius*cos(azimuth), radius*sin(azimuth)

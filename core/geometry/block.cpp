@@ -8,7 +8,9 @@
 
 namespace kerf {
 
-char faceLetter(FaceId face) { return static_cast<char>('A' + faceIndex(face)); }
+char faceLetter(FaceId face) {
+  return static_cast<char>('A' + faceIndex(face));
+}
 
 std::optional<FaceId> faceFromLetter(char letter) {
   if (letter >= 'a' && letter <= 'f') letter = static_cast<char>(letter - 'a' + 'A');
@@ -18,12 +20,18 @@ std::optional<FaceId> faceFromLetter(char letter) {
 
 CrossSlot crossSlot(FaceId face) {
   switch (face) {
-    case FaceId::A: return {1, 1};
-    case FaceId::B: return {1, 0};
-    case FaceId::C: return {0, 1};
-    case FaceId::D: return {1, 2};
-    case FaceId::E: return {2, 1};
-    case FaceId::F: return {3, 1};
+    case FaceId::A:
+      return {1, 1};
+    case FaceId::B:
+      return {1, 0};
+    case FaceId::C:
+      return {0, 1};
+    case FaceId::D:
+      return {1, 2};
+    case FaceId::E:
+      return {2, 1};
+    case FaceId::F:
+      return {3, 1};
   }
   return {1, 1};
 }
@@ -47,12 +55,18 @@ FaceFrame Block::face(FaceId face) const {
   const glm::vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
   // The Mokume table (MOKUME_CONVENTIONS.md A): image right / image down per face.
   switch (face) {
-    case FaceId::A: return {Z * h.z, X, -Y, Z, size_.x, size_.y};
-    case FaceId::B: return {Y * h.y, X, Z, Y, size_.x, size_.z};
-    case FaceId::C: return {-X * h.x, Z, -Y, -X, size_.z, size_.y};
-    case FaceId::D: return {-Y * h.y, X, -Z, -Y, size_.x, size_.z};
-    case FaceId::E: return {X * h.x, -Z, -Y, X, size_.z, size_.y};
-    case FaceId::F: return {-Z * h.z, -X, -Y, -Z, size_.x, size_.y};
+    case FaceId::A:
+      return {Z * h.z, X, -Y, Z, size_.x, size_.y};
+    case FaceId::B:
+      return {Y * h.y, X, Z, Y, size_.x, size_.z};
+    case FaceId::C:
+      return {-X * h.x, Z, -Y, -X, size_.z, size_.y};
+    case FaceId::D:
+      return {-Y * h.y, X, -Z, -Y, size_.x, size_.z};
+    case FaceId::E:
+      return {X * h.x, -Z, -Y, X, size_.z, size_.y};
+    case FaceId::F:
+      return {-Z * h.z, -X, -Y, -Z, size_.x, size_.y};
   }
   return {};
 }

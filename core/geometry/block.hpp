@@ -25,7 +25,9 @@ inline constexpr std::array<FaceId, 6> kAllFaces{FaceId::A, FaceId::B, FaceId::C
 
 char faceLetter(FaceId face);
 std::optional<FaceId> faceFromLetter(char letter);  // 'A'..'F' or 'a'..'f'
-inline int faceIndex(FaceId face) { return static_cast<int>(face); }
+inline int faceIndex(FaceId face) {
+  return static_cast<int>(face);
+}
 
 // Where a face lies and how its image is laid on it.
 struct FaceFrame {

@@ -66,9 +66,9 @@ void writeImage(const std::filesystem::path& path, const Image& image, int bits)
 
 ImageDifference compareImages(const Image& a, const Image& b, float tolerance) {
   if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
-    throw InputError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + "x" +
-                     std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" + std::to_string(b.height) +
-                     "x" + std::to_string(b.channels));
+    throw InputError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                     "x" + std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
+                     std::to_string(b.height) + "x" + std::to_string(b.channels));
   }
   ImageDifference d;
   std::size_t over = 0;

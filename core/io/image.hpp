@@ -1,8 +1,8 @@
 #pragma once
 // A plain float image (values 0..1, interleaved channels) and reading/writing it with OpenImageIO.
 #include <filesystem>
-#include <glm/vec3.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string>
 #include <vector>
@@ -14,9 +14,12 @@ struct Image {
   std::vector<float> pixels;  // row-major, top row first, `channels` floats per pixel
 
   Image() = default;
-  Image(int w, int h, int c) : width(w), height(h), channels(c), pixels(static_cast<std::size_t>(w) * h * c, 0.0f) {}
+  Image(int w, int h, int c)
+      : width(w), height(h), channels(c), pixels(static_cast<std::size_t>(w) * h * c, 0.0f) {}
   float* pixel(int x, int y) { return &pixels[(static_cast<std::size_t>(y) * width + x) * channels]; }
-  const float* pixel(int x, int y) const { return &pixels[(static_cast<std::size_t>(y) * width + x) * channels]; }
+  const float* pixel(int x, int y) const {
+    return &pixels[(static_cast<std::size_t>(y) * width + x) * channels];
+  }
   bool empty() const { return pixels.empty(); }
 };
 

@@ -22,8 +22,10 @@ std::string vectorText(glm::vec3 v) {
 
 }  // namespace
 
-NrrdWriter::NrrdWriter(const std::filesystem::path& path, const NrrdLayout& layout) : path_(path), layout_(layout) {
-  if (layout.size.x < 1 || layout.size.y < 1 || layout.size.z < 1) throw InputError("volume size must be positive");
+NrrdWriter::NrrdWriter(const std::filesystem::path& path, const NrrdLayout& layout)
+    : path_(path), layout_(layout) {
+  if (layout.size.x < 1 || layout.size.y < 1 || layout.size.z < 1)
+    throw InputError("volume size must be positive");
   const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
   if (!std::filesystem::is_directory(folder)) {
     throw InputError("cannot write " + path.string() + ": folder " + folder.string() + " does not exist");
@@ -40,7 +42,8 @@ NrrdWriter::NrrdWriter(const std::filesystem::path& path, const NrrdLayout& layo
   h << "type: " << (layout.type == NrrdLayout::Type::Float32 ? "float" : "uint8") << "\n";
   h << "dimension: " << (rgb ? 4 : 3) << "\n";
   h << "space dimension: 3\n";
-  h << "sizes: " << (rgb ? "3 " : "") << layout.size.x << " " << layout.size.y << " " << layout.size.z << "\n";
+  h << "sizes: " << (rgb ? "3 " : "") << layout.size.x << " " << layout.size.y << " " << layout.size.z
+    << "\n";
   h << "space directions: " << (rgb ? "none " : "") << vectorText({layout.spacing.x, 0, 0}) << " "
     << vectorText({0, layout.spacing.y, 0}) << " " << vectorText({0, 0, layout.spacing.z}) << "\n";
   h << "space origin: " << vectorText(layout.origin) << "\n";
@@ -63,7 +66,8 @@ NrrdWriter::~NrrdWriter() {
 }
 
 void NrrdWriter::writeBytes(const void* data, std::size_t bytes) {
-  if (std::fwrite(data, 1, bytes, file_) != bytes) throw InputError("cannot write " + path_.string() + " (disk full?)");
+  if (std::fwrite(data, 1, bytes, file_) != bytes)
+    throw InputError("cannot write " + path_.string() + " (disk full?)");
 }
 
 void NrrdWriter::writeSlice(std::span<const float> slice) {
@@ -114,7 +118,8 @@ NrrdHeader readNrrdHeader(const std::filesystem::path& path) {
   if (!in) throw InputError("cannot open " + path.string());
   NrrdHeader header;
   std::string line;
-  if (!std::getline(in, line) || line.rfind("NRRD000", 0) != 0) throw InputError(path.string() + " is not a NRRD file");
+  if (!std::getline(in, line) || line.rfind("NRRD000", 0) != 0)
+    throw InputError(path.string() + " is not a NRRD file");
   while (std::getline(in, line)) {
     if (line.empty()) break;
     if (line[0] == '#') continue;

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <glm/vec3.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <span>
 #include <string>
 #include <utility>

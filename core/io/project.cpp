@@ -25,11 +25,14 @@ float readNumber(const json& value, const std::string& what) {
 }
 
 glm::vec3 readVec3(const json& value, const std::string& what) {
-  if (!value.is_array() || value.size() != 3) throw InputError(what + " must be a list of 3 numbers, got " + value.dump());
+  if (!value.is_array() || value.size() != 3)
+    throw InputError(what + " must be a list of 3 numbers, got " + value.dump());
   return {readNumber(value[0], what), readNumber(value[1], what), readNumber(value[2], what)};
 }
 
-json writeVec3(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
+json writeVec3(glm::vec3 v) {
+  return json::array({v.x, v.y, v.z});
+}
 
 }  // namespace
 
@@ -39,8 +42,8 @@ json parametersToJson(const WoodParameters& params) {
   for (std::size_t i = 0; i < schema.size(); ++i) {
     const auto values = params.components(i);
     if (values.size() == 1) {
-      out[std::string(schema[i].id)] = schema[i].kind == ParamKind::Integer ? json(static_cast<long>(values[0]))
-                                                                              : json(values[0]);
+      out[std::string(schema[i].id)] =
+          schema[i].kind == ParamKind::Integer ? json(static_cast<long>(values[0])) : json(values[0]);
     } else {
       out[std::string(schema[i].id)] = json::array({values[0], values[1], values[2]});
     }
@@ -107,7 +110,8 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
   for (FaceId face : kAllFaces) {
     const fs::path& photo = project.facePhotos[faceIndex(face)];
     if (photo.empty()) continue;
-    faces[std::string(1, faceLetter(face))] = {{"photo", photo.lexically_proximate(baseDir).generic_string()}};
+    faces[std::string(1, faceLetter(face))] = {
+        {"photo", photo.lexically_proximate(baseDir).generic_string()}};
   }
   json out = {{"format", kProjectFormatName},
               {"version", kProjectFormatVersion},
@@ -137,7 +141,8 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   Project project;
   if (in.contains("block")) {
     const json& block = in["block"];
-    if (!block.is_object() || !block.contains("size_mm")) throw InputError("\"block\" needs \"size_mm\": [x, y, z]");
+    if (!block.is_object() || !block.contains("size_mm"))
+      throw InputError("\"block\" needs \"size_mm\": [x, y, z]");
     project.block = Block(readVec3(block["size_mm"], "block.size_mm"));
   }
   if (in.contains("faces")) {

@@ -47,7 +47,8 @@ void saveProject(const Project& project, const std::filesystem::path& file);
 
 // A Mokume-style sample folder: A_col.png .. F_col.png (other extensions accepted) on a 40 mm cube.
 // Faces that are missing stay empty; a folder without any face photo is an InputError.
-Project projectFromSampleFolder(const std::filesystem::path& folder, glm::vec3 blockSizeMm = glm::vec3(40.0f));
+Project projectFromSampleFolder(const std::filesystem::path& folder,
+                                glm::vec3 blockSizeMm = glm::vec3(40.0f));
 
 // A project file or a sample folder, whichever `path` is.
 Project loadDocument(const std::filesystem::path& path);

@@ -17,7 +17,9 @@ inline std::uint32_t mix(std::uint32_t x) {
   x ^= x >> 16;
   return x;
 }
-inline std::uint32_t hash(std::int32_t a, std::uint32_t seed) { return mix(static_cast<std::uint32_t>(a) ^ mix(seed)); }
+inline std::uint32_t hash(std::int32_t a, std::uint32_t seed) {
+  return mix(static_cast<std::uint32_t>(a) ^ mix(seed));
+}
 inline std::uint32_t hash(std::int32_t a, std::int32_t b, std::uint32_t seed) {
   return mix(static_cast<std::uint32_t>(b) ^ hash(a, seed));
 }
@@ -25,12 +27,20 @@ inline std::uint32_t hash(std::int32_t a, std::int32_t b, std::int32_t c, std::u
   return mix(static_cast<std::uint32_t>(c) ^ hash(a, b, seed));
 }
 // Uniform in [0, 1) from a hash.
-inline float unit(std::uint32_t h) { return static_cast<float>(h >> 8) * (1.0f / 16777216.0f); }
+inline float unit(std::uint32_t h) {
+  return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+}
 // Uniform in [-1, 1).
-inline float signedUnit(std::uint32_t h) { return unit(h) * 2.0f - 1.0f; }
+inline float signedUnit(std::uint32_t h) {
+  return unit(h) * 2.0f - 1.0f;
+}
 
-inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
-inline float fadeDerivative(float t) { return 30.0f * t * t * (t * (t - 2.0f) + 1.0f); }
+inline float fade(float t) {
+  return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
+}
+inline float fadeDerivative(float t) {
+  return 30.0f * t * t * (t * (t - 2.0f) + 1.0f);
+}
 
 // Smooth 1D value noise in [-1, 1] with lattice spacing 1.
 inline float value1(float x, std::uint32_t seed) {
@@ -52,7 +62,8 @@ inline glm::vec4 value3(glm::vec3 p, std::uint32_t seed) {
   const float a = signedUnit(hash(ix, iy, iz, seed)), b = signedUnit(hash(ix + 1, iy, iz, seed));
   const float c = signedUnit(hash(ix, iy + 1, iz, seed)), d = signedUnit(hash(ix + 1, iy + 1, iz, seed));
   const float e = signedUnit(hash(ix, iy, iz + 1, seed)), g = signedUnit(hash(ix + 1, iy, iz + 1, seed));
-  const float h = signedUnit(hash(ix, iy + 1, iz + 1, seed)), k = signedUnit(hash(ix + 1, iy + 1, iz + 1, seed));
+  const float h = signedUnit(hash(ix, iy + 1, iz + 1, seed)),
+              k = signedUnit(hash(ix + 1, iy + 1, iz + 1, seed));
   // Trilinear blend written as a polynomial in u so the derivative follows directly.
   const float k1 = b - a, k2 = c - a, k3 = e - a, k4 = a - b - c + d, k5 = a - c - e + h, k6 = a - b - e + g,
               k7 = -a + b + c - d + e - g - h + k;

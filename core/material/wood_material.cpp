@@ -43,7 +43,9 @@ enum SeedSlot : std::uint32_t {
 }  // namespace
 
 WoodMaterial::WoodMaterial(const WoodParameters& params, const GrowthField& field)
-    : params_(params), field_(field), seed_(noise::mix(static_cast<std::uint32_t>(params.seed) * 7919u + 13u)) {}
+    : params_(params),
+      field_(field),
+      seed_(noise::mix(static_cast<std::uint32_t>(params.seed) * 7919u + 13u)) {}
 
 glm::vec3 WoodMaterial::undistort(glm::vec3 p, const Cylindrical& c, glm::vec3* fiberDirection) const {
   const PithAxis& axis = field_.axis();
@@ -82,7 +84,8 @@ float WoodMaterial::seasonOf(float year) const {
 
 float WoodMaterial::poreWeight(const Cylindrical& c, float season) const {
   const float radius = params_.poreRadiusEarly + season * (params_.poreRadiusLate - params_.poreRadiusEarly);
-  const float density = params_.poreDensityEarly + season * (params_.poreDensityLate - params_.poreDensityEarly);
+  const float density =
+      params_.poreDensityEarly + season * (params_.poreDensityLate - params_.poreDensityEarly);
   if (radius <= 0.0f || density <= 0.0f) return 0.0f;
   // Stratified placement in the cross-section (Liu Sec. 4.6): one candidate pore per cell, placed by a
   // hash of the cell, kept inside its cell so no neighbour cells need checking.
@@ -117,10 +120,12 @@ float WoodMaterial::rayWeight(const Cylindrical& c) const {
   const auto k = static_cast<std::int32_t>(std::floor((c.height + stagger) / cellHeight));
   const std::uint32_t h = noise::hash(band, i, k, seed_ + kRayCell);
   if (noise::unit(h) >= params_.rayDensity) return 0.0f;
-  const float centerAngle = -kPi + (i + 0.5f + 0.3f * noise::signedUnit(noise::mix(h ^ 0x9e3779b9U))) * sector;
+  const float centerAngle =
+      -kPi + (i + 0.5f + 0.3f * noise::signedUnit(noise::mix(h ^ 0x9e3779b9U))) * sector;
   float dAngle = c.azimuth - centerAngle;
   dAngle -= 2.0f * kPi * std::round(dAngle / (2.0f * kPi));
-  const float centerHeight = (k + 0.5f + 0.15f * noise::signedUnit(noise::mix(h ^ 0x85ebca6bU))) * cellHeight - stagger;
+  const float centerHeight =
+      (k + 0.5f + 0.15f * noise::signedUnit(noise::mix(h ^ 0x85ebca6bU))) * cellHeight - stagger;
   const float dt = c.radius * dAngle / params_.rayWidth;
   const float dh = (c.height - centerHeight) / params_.rayHeight;
   const float q = c.radius / bandLength - band;  // taper: rays begin and end inside their band
@@ -150,7 +155,8 @@ WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDire
   t += 0.5f * params_.ringColorVariation * noise::value1(out.year, seed_ + kRingColor);
   if (params_.mottleStrength > 0.0f) {
     const float m = params_.mottleScale;
-    t += 0.5f * params_.mottleStrength * noise::fractal3({c.x / m, c.y / m, c.height / (4.0f * m)}, seed_ + kMottle).x;
+    t += 0.5f * params_.mottleStrength *
+         noise::fractal3({c.x / m, c.y / m, c.height / (4.0f * m)}, seed_ + kMottle).x;
   }
   if (params_.fiberStrength > 0.0f) {
     const glm::vec3 q(c.x / params_.fiberWidth, c.y / params_.fiberWidth, c.height / params_.fiberLength);
@@ -160,14 +166,16 @@ WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDire
 
   const float sap = smoothstep(params_.sapwoodStart - 0.5f * params_.sapwoodTransition,
                                params_.sapwoodStart + 0.5f * params_.sapwoodTransition, out.year);
-  const glm::vec3 early = glm::max(glm::mix(params_.earlywoodColor, params_.sapwoodEarlywoodColor, sap), glm::vec3(1e-3f));
-  const glm::vec3 late = glm::max(glm::mix(params_.latewoodColor, params_.sapwoodLatewoodColor, sap), glm::vec3(1e-3f));
+  const glm::vec3 early =
+      glm::max(glm::mix(params_.earlywoodColor, params_.sapwoodEarlywoodColor, sap), glm::vec3(1e-3f));
+  const glm::vec3 late =
+      glm::max(glm::mix(params_.latewoodColor, params_.sapwoodLatewoodColor, sap), glm::vec3(1e-3f));
   glm::vec3 color = early * glm::pow(late / early, glm::vec3(t));
   color = glm::mix(color, params_.rayColor, params_.rayOpacity * out.ray);
 
-  static constexpr glm::vec3 WoodParameters::* kTints[6] = {&WoodParameters::faceTintA, &WoodParameters::faceTintB,
-                                                            &WoodParameters::faceTintC, &WoodParameters::faceTintD,
-                                                            &WoodParameters::faceTintE, &WoodParameters::faceTintF};
+  static constexpr glm::vec3 WoodParameters::*kTints[6] = {
+      &WoodParameters::faceTintA, &WoodParameters::faceTintB, &WoodParameters::faceTintC,
+      &WoodParameters::faceTintD, &WoodParameters::faceTintE, &WoodParameters::faceTintF};
   if (faceIndex >= 0 && faceIndex < 6) color *= params_.*kTints[faceIndex];
   out.color = glm::clamp(color, 0.0f, 1.0f);
   return out;

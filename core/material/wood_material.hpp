@@ -17,11 +17,11 @@
 namespace kerf {
 
 struct WoodSample {
-  float year = 0;        // growth field value G (years since the pith) at the distorted point
-  float latewood = 0;    // season blend s in [0, 1]: 0 earlywood, 1 latewood
-  float pore = 0;        // pore weight in [0, 1] (Wyvill kernel)
-  float ray = 0;         // ray weight in [0, 1]
-  glm::vec3 color{0.0f};          // RGB in [0, 1], as stored in 8-bit images (sRGB-encoded)
+  float year = 0;                  // growth field value G (years since the pith) at the distorted point
+  float latewood = 0;              // season blend s in [0, 1]: 0 earlywood, 1 latewood
+  float pore = 0;                  // pore weight in [0, 1] (Wyvill kernel)
+  float ray = 0;                   // ray weight in [0, 1]
+  glm::vec3 color{0.0f};           // RGB in [0, 1], as stored in 8-bit images (sRGB-encoded)
   glm::vec3 fiberDirection{0.0f};  // unit, block frame (only when asked for)
 };
 
@@ -36,6 +36,8 @@ class WoodMaterial {
   float year(glm::vec3 pMm) const;
 
   const GrowthField& field() const { return field_; }
+  // The hash seed derived from model.seed (the GLSL port takes it as a uniform).
+  std::uint32_t hashSeed() const { return seed_; }
   const WoodParameters& params() const { return params_; }
 
  private:

@@ -23,22 +23,32 @@ const ParamSpec kSchema[] = {
 #undef V1
 #undef V3
 
-float* componentPointer(float& value) { return &value; }
-float* componentPointer(glm::vec3& value) { return glm::value_ptr(value); }
+float* componentPointer(float& value) {
+  return &value;
+}
+float* componentPointer(glm::vec3& value) {
+  return glm::value_ptr(value);
+}
 
 }  // namespace
 
 std::string_view paramKindName(ParamKind kind) {
   switch (kind) {
-    case ParamKind::Scalar: return "scalar";
-    case ParamKind::Integer: return "integer";
-    case ParamKind::Color: return "color";
-    case ParamKind::Vector3: return "vector3";
+    case ParamKind::Scalar:
+      return "scalar";
+    case ParamKind::Integer:
+      return "integer";
+    case ParamKind::Color:
+      return "color";
+    case ParamKind::Vector3:
+      return "vector3";
   }
   return "scalar";
 }
 
-std::span<const ParamSpec> parameterSchema() { return kSchema; }
+std::span<const ParamSpec> parameterSchema() {
+  return kSchema;
+}
 
 std::optional<std::size_t> parameterIndex(std::string_view id) {
   for (std::size_t i = 0; i < std::size(kSchema); ++i) {

@@ -17,7 +17,8 @@ void checkSamples(int samples) {
 
 }  // namespace
 
-Image renderFace(const WoodModel& model, FaceId face, glm::ivec2 size, int samples, const Progress& progress) {
+Image renderFace(const WoodModel& model, FaceId face, glm::ivec2 size, int samples,
+                 const Progress& progress) {
   checkSamples(samples);
   if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) {
     throw InputError("face image size must be 1.." + std::to_string(kMaxImageSide) + " pixels a side");
@@ -42,21 +43,26 @@ Image renderFace(const WoodModel& model, FaceId face, glm::ivec2 size, int sampl
   return image;
 }
 
-std::array<Image, 6> renderFaces(const WoodModel& model, float pxPerMm, int samples, const Progress& progress) {
-  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm)) throw InputError("pixels per mm must be a positive number");
+std::array<Image, 6> renderFaces(const WoodModel& model, float pxPerMm, int samples,
+                                 const Progress& progress) {
+  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
+    throw InputError("pixels per mm must be a positive number");
   std::array<Image, 6> images;
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
-    Progress part{progress.report ? [&, i](double f) { progress.report((i + f) / 6.0); } : std::function<void(double)>{},
+    Progress part{progress.report ? [&, i](double f) { progress.report((i + f) / 6.0); }
+                                  : std::function<void(double)>{},
                   progress.stop};
     images[i] = renderFace(model, face, model.block().faceImageSize(face, pxPerMm), samples, part);
   }
   return images;
 }
 
-Image renderCut(const WoodModel& model, const CutPlane& plane, float pxPerMm, int samples, const Progress& progress) {
+Image renderCut(const WoodModel& model, const CutPlane& plane, float pxPerMm, int samples,
+                const Progress& progress) {
   checkSamples(samples);
-  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm)) throw InputError("pixels per mm must be a positive number");
+  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
+    throw InputError("pixels per mm must be a positive number");
   const auto bounds = plane.boundsInBlock(model.block());
   if (!bounds) throw InputError("the cut plane does not pass through the block");
   const glm::vec2 extent = bounds->max - bounds->min;

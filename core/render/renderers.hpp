@@ -12,10 +12,12 @@ namespace kerf {
 
 // Face `face` at `size` pixels (RGB). `samples` x `samples` points per pixel are averaged (1 = the
 // pixel centre only), which is what a camera sensor does and keeps pores from aliasing.
-Image renderFace(const WoodModel& model, FaceId face, glm::ivec2 size, int samples = 1, const Progress& progress = {});
+Image renderFace(const WoodModel& model, FaceId face, glm::ivec2 size, int samples = 1,
+                 const Progress& progress = {});
 
 // All six faces at pxPerMm, in A..F order.
-std::array<Image, 6> renderFaces(const WoodModel& model, float pxPerMm, int samples = 1, const Progress& progress = {});
+std::array<Image, 6> renderFaces(const WoodModel& model, float pxPerMm, int samples = 1,
+                                 const Progress& progress = {});
 
 // The cut surface on `plane` (RGBA): the image covers the rectangle bounding the plane's intersection
 // with the block, at pxPerMm; pixels outside the block are transparent. Orientation: see CutPlane.

@@ -24,7 +24,8 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
   const glm::vec3 size = model.block().size();
   const float longest = std::max({size.x, size.y, size.z});
   glm::ivec3 n;
-  for (int a = 0; a < 3; ++a) n[a] = std::max(1, static_cast<int>(std::lround(resolution * size[a] / longest)));
+  for (int a = 0; a < 3; ++a)
+    n[a] = std::max(1, static_cast<int>(std::lround(resolution * size[a] / longest)));
   const glm::vec3 spacing = size / glm::vec3(n);
   const glm::vec3 origin = -0.5f * size + 0.5f * spacing;
 
@@ -68,21 +69,26 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
   for (int z = 0; z < n.z; ++z) {
     progress.throwIfCancelled();
     const float pz = origin.z + z * spacing.z;
-    parallelRows(n.y, [&](int y) {
-      const float py = origin.y + y * spacing.y;
-      for (int x = 0; x < n.x; ++x) {
-        const glm::vec3 p(origin.x + x * spacing.x, py, pz);
-        const std::size_t i = static_cast<std::size_t>(y) * n.x + x;
-        if (growth) {
-          floats[i] = model.material().year(p);
-        } else {
-          const glm::vec3 c = model.evaluate(p).color;
-          for (int ch = 0; ch < 3; ++ch) bytes[i * 3 + ch] = static_cast<std::uint8_t>(std::lround(c[ch] * 255.0f));
-        }
-      }
-    }, {nullptr, progress.stop});
-    if (growth) writer.writeSlice(std::span<const float>(floats));
-    else writer.writeSlice(std::span<const std::uint8_t>(bytes));
+    parallelRows(n.y,
+                 [&](int y) {
+                   const float py = origin.y + y * spacing.y;
+                   for (int x = 0; x < n.x; ++x) {
+                     const glm::vec3 p(origin.x + x * spacing.x, py, pz);
+                     const std::size_t i = static_cast<std::size_t>(y) * n.x + x;
+                     if (growth) {
+                       floats[i] = model.material().year(p);
+                     } else {
+                       const glm::vec3 c = model.evaluate(p).color;
+                       for (int ch = 0; ch < 3; ++ch)
+                         bytes[i * 3 + ch] = static_cast<std::uint8_t>(std::lround(c[ch] * 255.0f));
+                     }
+                   }
+                 },
+                 {nullptr, progress.stop});
+    if (growth)
+      writer.writeSlice(std::span<const float>(floats));
+    else
+      writer.writeSlice(std::span<const std::uint8_t>(bytes));
     progress.set(static_cast<double>(z + 1) / n.z);
   }
   writer.finish();

@@ -10,7 +10,8 @@
 namespace kerf {
 
 enum class VolumeQuantity {
-  Growth,  // float32: growth time in years (WoodSample::year); header key ring_levels lists the ring iso-values
+  Growth,  // float32: growth time in years (WoodSample::year); header key ring_levels lists the ring
+           // iso-values
   Color,   // uint8 RGB
 };
 VolumeQuantity volumeQuantityFromName(std::string_view name);  // "growth" | "color"; InputError otherwise

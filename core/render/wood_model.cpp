@@ -4,7 +4,8 @@
 
 namespace kerf {
 
-WoodModel::WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates) : block_(block) {
+WoodModel::WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates)
+    : block_(block) {
   validate(params);
   params_ = std::make_unique<const WoodParameters>(params);
   field_ = std::make_unique<const GrowthField>(*params_, rates);

@@ -28,8 +28,12 @@ void parallelRows(int rows, const std::function<void(int)>& body, const Progress
   if (cancelled) throw Cancelled();
 }
 
-void setWorkerThreads(int threads) { cv::setNumThreads(threads <= 0 ? -1 : threads); }
+void setWorkerThreads(int threads) {
+  cv::setNumThreads(threads <= 0 ? -1 : threads);
+}
 
-int workerThreads() { return cv::getNumThreads(); }
+int workerThreads() {
+  return cv::getNumThreads();
+}
 
 }  // namespace kerf

@@ -41,10 +41,12 @@ TEST(Block, PixelAndBlockRoundTripOnEveryFace) {
     const FaceFrame frame = block.face(face);
     EXPECT_EQ(size.x, static_cast<int>(frame.widthMm * 4));
     EXPECT_EQ(size.y, static_cast<int>(frame.heightMm * 4));
-    for (glm::vec2 pos : {glm::vec2(0.5f, 0.5f), glm::vec2(size.x - 0.5f, 3.25f), glm::vec2(17.0f, size.y - 2.0f)}) {
+    for (glm::vec2 pos :
+         {glm::vec2(0.5f, 0.5f), glm::vec2(size.x - 0.5f, 3.25f), glm::vec2(17.0f, size.y - 2.0f)}) {
       const glm::vec3 p = block.imageToBlock(face, pos, size);
       EXPECT_TRUE(block.contains(p)) << faceLetter(face);
-      EXPECT_NEAR(glm::dot(p - frame.center, frame.normal), 0.0f, 1e-4f) << "point must lie on face " << faceLetter(face);
+      EXPECT_NEAR(glm::dot(p - frame.center, frame.normal), 0.0f, 1e-4f)
+          << "point must lie on face " << faceLetter(face);
       const glm::vec2 back = block.blockToImage(face, p, size);
       EXPECT_NEAR(back.x, pos.x, 1e-3f);
       EXPECT_NEAR(back.y, pos.y, 1e-3f);
@@ -64,8 +66,11 @@ TEST(Block, CrossNeighboursShareTheirEdges) {
     FaceId a, b;
     bool horizontal;  // true: a's top edge meets b's bottom edge; false: a's right edge meets b's left edge
   };
-  const Edge edges[] = {{FaceId::A, FaceId::B, true}, {FaceId::D, FaceId::A, true}, {FaceId::C, FaceId::A, false},
-                        {FaceId::A, FaceId::E, false}, {FaceId::E, FaceId::F, false}};
+  const Edge edges[] = {{FaceId::A, FaceId::B, true},
+                        {FaceId::D, FaceId::A, true},
+                        {FaceId::C, FaceId::A, false},
+                        {FaceId::A, FaceId::E, false},
+                        {FaceId::E, FaceId::F, false}};
   for (const Edge& e : edges) {
     const glm::ivec2 sa = block.faceImageSize(e.a, k), sb = block.faceImageSize(e.b, k);
     if (e.horizontal) {

@@ -43,7 +43,8 @@ void checkGolden(const Image& rendered, const std::string& name) {
 TEST(Golden, DemoFaces) {
   const WoodModel model(demoProject());
   const auto faces = renderFaces(model, 2.0f, 2);  // 80 x 80 px
-  for (FaceId face : kAllFaces) checkGolden(faces[faceIndex(face)], std::string("demo_face_") + faceLetter(face));
+  for (FaceId face : kAllFaces)
+    checkGolden(faces[faceIndex(face)], std::string("demo_face_") + faceLetter(face));
 }
 
 TEST(Golden, DemoSlantedCut) {

@@ -28,7 +28,8 @@ GrowthRates randomRates(const Block& block, const PithAxis& axis, unsigned seed,
 
 // A point at cylindrical coordinates (h, theta, r) of the axis.
 glm::vec3 at(const PithAxis& axis, float h, float theta, float r) {
-  return axis.origin + h * axis.direction + r * (std::cos(theta) * axis.reference + std::sin(theta) * axis.binormal);
+  return axis.origin + h * axis.direction +
+         r * (std::cos(theta) * axis.reference + std::sin(theta) * axis.binormal);
 }
 
 }  // namespace
@@ -62,7 +63,8 @@ TEST(GrowthField, UndeformedFieldIsDistanceToPithOverRingWidth) {
   for (int i = 0; i < 2000; ++i) {  // inside, below the first radial node and beyond the last one
     const glm::vec3 p(coord(random), coord(random), coord(random));
     const float distance = axis.toCylindrical(p).radius;
-    EXPECT_NEAR(field.evaluate(p), distance / ringWidth, 1e-4f * (1 + distance)) << p.x << " " << p.y << " " << p.z;
+    EXPECT_NEAR(field.evaluate(p), distance / ringWidth, 1e-4f * (1 + distance))
+        << p.x << " " << p.y << " " << p.z;
   }
 }
 
@@ -99,10 +101,12 @@ TEST(GrowthField, ContinuousAcrossGridCells) {
         const float theta = -kPi + (ia + 0.37f) * 2 * kPi / rates.azimuths;
         const float spoke = -kPi + ia * 2 * kPi / rates.azimuths;
         const float r = rates.radiusMin + ir * radialStep;
-        expectContinuousAt([&](float t) { return field.evaluate(at(axis, h + 0.3f, theta, t)); }, r, 1e-2f, "radius");
-        expectContinuousAt([&](float t) { return field.evaluate(at(axis, t, theta, r + 0.4f)); }, h, 1e-2f, "height");
-        expectContinuousAt([&](float t) { return field.evaluate(at(axis, h + 0.3f, t, r + 0.4f)); }, spoke, 1e-3f,
-                           "azimuth");
+        expectContinuousAt([&](float t) { return field.evaluate(at(axis, h + 0.3f, theta, t)); }, r, 1e-2f,
+                           "radius");
+        expectContinuousAt([&](float t) { return field.evaluate(at(axis, t, theta, r + 0.4f)); }, h, 1e-2f,
+                           "height");
+        expectContinuousAt([&](float t) { return field.evaluate(at(axis, h + 0.3f, t, r + 0.4f)); }, spoke,
+                           1e-3f, "azimuth");
       }
   // Across the azimuth seam at +-pi, and the pith is year 0.
   expectContinuousAt([&](float t) { return field.evaluate(at(axis, 1, t, 50)); }, kPi, 1e-3f, "seam");

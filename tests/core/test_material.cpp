@@ -30,7 +30,9 @@ GrowthRates uniformRates(const WoodParameters& p, const Block& block) {
 }
 
 // A point on the block's z axis at growth time `year` for the plain model (pith at z = -50).
-glm::vec3 pointAtYear(float year) { return {0, 0, -50 + 2.0f * year}; }
+glm::vec3 pointAtYear(float year) {
+  return {0, 0, -50 + 2.0f * year};
+}
 
 void expectColor(glm::vec3 a, glm::vec3 b, float tol = 1e-4f) {
   EXPECT_NEAR(a.x, b.x, tol);
@@ -61,7 +63,8 @@ TEST(Material, ColoursInBetweenFollowBeersLaw) {
   const WoodSample mid = model.evaluate(pointAtYear(20.4f));
   ASSERT_GT(mid.latewood, 0.05f);
   ASSERT_LT(mid.latewood, 0.95f);
-  const glm::vec3 expected = p.earlywoodColor * glm::pow(p.latewoodColor / p.earlywoodColor, glm::vec3(mid.latewood));
+  const glm::vec3 expected =
+      p.earlywoodColor * glm::pow(p.latewoodColor / p.earlywoodColor, glm::vec3(mid.latewood));
   expectColor(mid.color, expected);
 }
 
@@ -137,7 +140,8 @@ TEST(Material, RaysRunRadially) {
   // On the end grain (y = 0) around the pith, find a ray at radius 5 mm and follow it outwards.
   float bestAngle = 0, best = 0;
   for (float a = 0; a < 6.283f; a += 0.002f)
-    if (const float w = model.evaluate({5 * std::cos(a), 0, 5 * std::sin(a)}).ray; w > best) best = w, bestAngle = a;
+    if (const float w = model.evaluate({5 * std::cos(a), 0, 5 * std::sin(a)}).ray; w > best)
+      best = w, bestAngle = a;
   ASSERT_GT(best, 0.5f);
   const glm::vec3 radial(std::cos(bestAngle), 0, std::sin(bestAngle));
   EXPECT_GT(model.evaluate(radial * 7.0f).ray, 0.3f);  // same band (0..20 mm): the ray goes on outward

@@ -22,7 +22,9 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
 
 std::string loadError(const fs::path& path) {
   try {
@@ -87,7 +89,8 @@ TEST(Project, SavingIsAtomicAndLeavesNoTemporaryFiles) {
 
 TEST(Project, MissingParametersTakeDefaults) {
   const fs::path dir = scratch("defaults");
-  writeText(dir / "p.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": 2}})");
+  writeText(dir / "p.kerf",
+            R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": 2}})");
   const Project project = loadProject(dir / "p.kerf");
   EXPECT_FLOAT_EQ(project.params.ringWidth, 2.0f);
   EXPECT_EQ(project.params.latewoodColor, WoodParameters{}.latewoodColor);
@@ -107,27 +110,34 @@ TEST(Project, ClearErrorsForBadFiles) {
   writeText(dir / "newer.kerf", R"({"format": "kerf-project", "version": 99})");
   EXPECT_NE(loadError(dir / "newer.kerf").find("newer Kerf"), std::string::npos);
 
-  writeText(dir / "nan.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": null}})");
+  writeText(dir / "nan.kerf",
+            R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": null}})");
   EXPECT_NE(loadError(dir / "nan.kerf").find("growth.ring_width"), std::string::npos);
 
-  writeText(dir / "range.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"rays.density": 7}})");
+  writeText(dir / "range.kerf",
+            R"({"format": "kerf-project", "version": 1, "parameters": {"rays.density": 7}})");
   EXPECT_NE(loadError(dir / "range.kerf").find("outside its allowed range"), std::string::npos);
 
-  writeText(dir / "unknown.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"rings.wobble": 1}})");
+  writeText(dir / "unknown.kerf",
+            R"({"format": "kerf-project", "version": 1, "parameters": {"rings.wobble": 1}})");
   EXPECT_NE(loadError(dir / "unknown.kerf").find("unknown parameter"), std::string::npos);
 
-  writeText(dir / "color.kerf", R"({"format": "kerf-project", "version": 1, "parameters": {"color.earlywood": [1, 2]}})");
+  writeText(dir / "color.kerf",
+            R"({"format": "kerf-project", "version": 1, "parameters": {"color.earlywood": [1, 2]}})");
   EXPECT_NE(loadError(dir / "color.kerf").find("3 numbers"), std::string::npos);
 
-  writeText(dir / "block.kerf", R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [0, 1, 1]}})");
+  writeText(dir / "block.kerf",
+            R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [0, 1, 1]}})");
   EXPECT_NE(loadError(dir / "block.kerf").find("block size"), std::string::npos);
 
-  writeText(dir / "grid.kerf",
-            R"({"format": "kerf-project", "version": 1, "growth_rates": {"heights": 1, "azimuths": 1, "radii": 2,
+  writeText(
+      dir / "grid.kerf",
+      R"({"format": "kerf-project", "version": 1, "growth_rates": {"heights": 1, "azimuths": 1, "radii": 2,
                 "height_range_mm": [0, 1], "radius_range_mm": [0, 5], "rates": [1]}})");
   EXPECT_NE(loadError(dir / "grid.kerf").find("expected 2"), std::string::npos);
 
-  writeText(dir / "face.kerf", R"({"format": "kerf-project", "version": 1, "faces": {"G": {"photo": "x.png"}}})");
+  writeText(dir / "face.kerf",
+            R"({"format": "kerf-project", "version": 1, "faces": {"G": {"photo": "x.png"}}})");
   EXPECT_NE(loadError(dir / "face.kerf").find("unknown face"), std::string::npos);
 }
 

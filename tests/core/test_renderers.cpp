@@ -6,6 +6,7 @@
 #include <atomic>
 
 #include "demo/demo_block.hpp"
+#include "render/batch_evaluator.hpp"
 #include "render/renderers.hpp"
 #include "render/unfolded_cross.hpp"
 #include "util/error.hpp"
@@ -25,7 +26,8 @@ TEST(Renderers, FacePixelsAreTheModelAtPixelCentres) {
   for (FaceId face : {FaceId::A, FaceId::D, FaceId::E}) {
     const Image image = renderFace(model, face, size);
     for (glm::ivec2 px : {glm::ivec2(0, 0), glm::ivec2(17, 31), glm::ivec2(39, 5)}) {
-      const glm::vec3 expected = model.evaluate(model.block().pixelCenter(face, px.x, px.y, size), faceIndex(face)).color;
+      const glm::vec3 expected =
+          model.evaluate(model.block().pixelCenter(face, px.x, px.y, size), faceIndex(face)).color;
       const float* got = image.pixel(px.x, px.y);
       EXPECT_FLOAT_EQ(got[0], expected.x);
       EXPECT_FLOAT_EQ(got[2], expected.z);
@@ -49,7 +51,8 @@ TEST(Renderers, CutJustInsideAFaceLooksLikeThatFace) {
         EXPECT_EQ(cut.pixel(x, y)[3], 1.0f);
         for (int c = 0; c < 3; ++c) difference += std::abs(cut.pixel(x, y)[c] - faceImage.pixel(x, y)[c]);
       }
-    EXPECT_LT(difference / (cut.width * cut.height * 3), 0.01) << "cut and face " << faceLetter(face) << " disagree";
+    EXPECT_LT(difference / (cut.width * cut.height * 3), 0.01)
+        << "cut and face " << faceLetter(face) << " disagree";
   }
 }
 
@@ -86,4 +89,20 @@ TEST(Renderers, UnfoldedCrossPlacesFacesInTheirSlots) {
   EXPECT_EQ(cross.pixel(16 + 3, 4)[1], faces[faceIndex(FaceId::B)].pixel(3, 4)[1]);
   EXPECT_EQ(cross.pixel(48 + 2, 16 + 9)[0], faces[faceIndex(FaceId::F)].pixel(2, 9)[0]);
   EXPECT_EQ(cross.pixel(0, 0)[0], 0.0f);  // empty corner
+}
+
+TEST(Renderers, BatchEvaluationEqualsPointEvaluation) {
+  const WoodModel model(demo());
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < 10000; ++i)
+    points.emplace_back(-19.0f + (i % 97) * 0.4f, -19.0f + (i % 89) * 0.43f, -19.0f + (i % 83) * 0.45f);
+  std::vector<float> years(points.size());
+  std::vector<glm::vec3> colors(points.size());
+  evaluateYears(model, points, years);
+  evaluateColors(model, points, colors);
+  for (std::size_t i = 0; i < points.size(); i += 37) {
+    EXPECT_EQ(years[i], model.material().year(points[i]));
+    EXPECT_EQ(colors[i], model.evaluate(points[i]).color);
+  }
+  EXPECT_THROW(evaluateYears(model, points, std::span<float>(years).first(3)), std::invalid_argument);
 }

@@ -15,7 +15,7 @@ TEST(Schema, EveryParameterIsWellFormed) {
   ASSERT_GE(schema.size(), 40u);
   std::set<std::string_view> ids, names;
   const std::set<std::string_view> groups{"growth", "rings", "color", "distortion", "fibers",
-                                          "pores", "rays", "faces", "model"};
+                                          "pores",  "rays",  "faces", "model"};
   for (const ParamSpec& spec : schema) {
     EXPECT_TRUE(ids.insert(spec.id).second) << "duplicate id " << spec.id;
     EXPECT_TRUE(names.insert(spec.name).second) << "duplicate name " << spec.name;
@@ -75,8 +75,8 @@ TEST(Schema, ValidationNamesTheBadParameter) {
 TEST(Schema, GlslDeclaresOneUniformPerParameter) {
   const std::string glsl = glslUniformDeclarations();
   for (const ParamSpec& spec : parameterSchema()) {
-    const std::string line =
-        std::string("uniform ") + (spec.components() == 3 ? "vec3" : "float") + " u_" + std::string(spec.name) + ";";
+    const std::string line = std::string("uniform ") + (spec.components() == 3 ? "vec3" : "float") + " u_" +
+                             std::string(spec.name) + ";";
     EXPECT_NE(glsl.find(line), std::string::npos) << line;
   }
 }

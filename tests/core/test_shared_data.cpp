@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 
 TEST(SharedData, MokumeSampleCN03LoadsAsASampleFolder) {
   const fs::path folder = fs::path(KERF_SHARED_DIR) / "data" / "mokume" / "CN03";
-  if (!fs::is_directory(folder)) GTEST_SKIP() << "reference data not found at " << folder << " (../shared absent)";
+  if (!fs::is_directory(folder))
+    GTEST_SKIP() << "reference data not found at " << folder << " (../shared absent)";
   const Project project = loadDocument(folder);
   EXPECT_EQ(project.block.size(), glm::vec3(40.0f));
   for (FaceId face : kAllFaces) {

@@ -14,7 +14,9 @@ using namespace kerf;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path artifact(const std::string& name) { return fs::path(KERF_TEST_ARTIFACTS) / name; }
+fs::path artifact(const std::string& name) {
+  return fs::path(KERF_TEST_ARTIFACTS) / name;
+}
 }  // namespace
 
 TEST(Volume, GrowthVolumeHeaderAndData) {

@@ -1,0 +1,74 @@
+// kerf [PROJECT|SAMPLE_FOLDER] [--screenshot FILE]: the desktop editor. Without a document it opens
+// the bundled demo; with --screenshot it saves the window once the faces have rendered and exits
+// (used by the tests and for the README's picture).
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+#include <QTimer>
+#include <cstdio>
+
+#include "main_window.hpp"
+
+namespace {
+
+void fail(const QString& message) {
+  std::fprintf(stderr, "kerf: %s\n", qPrintable(message));
+  QCoreApplication::exit(1);
+}
+
+// Saves the window as soon as the document is ready; exits 0 on success, 1 on any failure.
+void screenshotWhenReady(kerf::MainWindow& window, const QString& file) {
+  QObject::connect(&window, &kerf::MainWindow::documentReady, &window, [&window, file] {
+    QDir().mkpath(QFileInfo(file).absolutePath());
+    if (window.grab().save(file)) {
+      QCoreApplication::exit(0);
+    } else {
+      fail(QStringLiteral("cannot write the screenshot %1").arg(file));
+    }
+  });
+  QObject::connect(&window, &kerf::MainWindow::documentFailed, &window, &fail);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  QApplication::setApplicationName(QStringLiteral("Kerf"));
+  QApplication::setOrganizationName(QStringLiteral("Kerf"));
+  QApplication::setApplicationVersion(QStringLiteral(KERF_VERSION));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      QStringLiteral("Kerf: an editor for the procedural appearance of solid wood."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument(
+      QStringLiteral("document"),
+      QStringLiteral("A .kerf project or a Mokume-style sample folder (default: the demo)."),
+      QStringLiteral("[PROJECT|SAMPLE_FOLDER]"));
+  const QCommandLineOption screenshot(
+      QStringLiteral("screenshot"),
+      QStringLiteral("Save the window to FILE once the faces have rendered, then exit."),
+      QStringLiteral("FILE"));
+  parser.addOption(screenshot);
+  parser.process(app);
+  const QStringList documents = parser.positionalArguments();
+  if (documents.size() > 1) {
+    std::fprintf(stderr, "kerf: at most one document, got %lld\n", static_cast<long long>(documents.size()));
+    return 2;
+  }
+
+  kerf::MainWindow window;
+  if (parser.isSet(screenshot)) screenshotWhenReady(window, parser.value(screenshot));
+  window.show();
+  // Start from the event loop, so the window is up before the (possibly slow) demo generation.
+  QTimer::singleShot(0, &window, [&window, documents] {
+    if (documents.isEmpty()) {
+      window.openDemo(kerf::defaultDemoFolder());
+    } else {
+      window.openDocument(documents.front());
+    }
+  });
+  return app.exec();
+}

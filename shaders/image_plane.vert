@@ -1,0 +1,3 @@
+// A full-screen triangle; image_plane.frag works out the block point of every pixel itself.
+const vec2 kCorners[3] = vec2[3](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+void main() { gl_Position = vec4(kCorners[gl_VertexID], 0.0, 1.0); }

@@ -1,0 +1,106 @@
+// CPU/GPU parity: the GLSL wood model (shaders/wood_model.glsl) and core's model must give the same
+// picture. Renders faces and a slanted cut both ways, offscreen, and compares them.
+#include <QGuiApplication>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QtTest>
+#include <memory>
+
+#include "demo/demo_block.hpp"
+#include "gl/gpu_image_renderer.hpp"
+#include "render/renderers.hpp"
+
+using namespace kerf;
+
+namespace {
+
+// Tolerances: both sides compute in 32-bit floats with the same integer hashes, so colours agree to
+// rounding (measured with Mesa llvmpipe: mean difference ~1e-5). The share tolerance leaves room for
+// a pore, ray or ring edge that falls within rounding distance of a pixel centre on another GPU.
+constexpr double kMaxMeanAbs = 0.001;
+constexpr float kPixelTolerance = 0.02f;
+constexpr double kMaxShareOver = 0.005;
+
+}  // namespace
+
+class GpuParityTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    context_ = std::make_unique<QOpenGLContext>();
+    context_->setFormat(format);
+    QVERIFY2(context_->create(), "no OpenGL 3.3 core context (run under xvfb-run with Mesa)");
+    surface_ = std::make_unique<QOffscreenSurface>();
+    surface_->setFormat(context_->format());
+    surface_->create();
+    QVERIFY(context_->makeCurrent(surface_.get()));
+    qInfo() << "OpenGL renderer:"
+            << reinterpret_cast<const char*>(context_->functions()->glGetString(GL_RENDERER));
+    try {
+      renderer_ = std::make_unique<GpuImageRenderer>();
+    } catch (const std::exception& e) {
+      QFAIL(e.what());
+    }
+  }
+
+  void cleanupTestCase() {
+    renderer_.reset();
+    context_->doneCurrent();
+  }
+
+  void demoFaces() {
+    const WoodModel model(demoProject());
+    for (FaceId face : kAllFaces) {
+      const glm::ivec2 size(96, 96);
+      compare(renderFace(model, face, size), renderer_->renderFace(model, face, size),
+              QString("face_%1").arg(faceLetter(face)));
+    }
+  }
+
+  void slantedCut() {
+    const WoodModel model(demoProject());
+    const CutPlane plane({2, -3, 1}, {0.3f, 1.0f, 0.6f});
+    compare(renderCut(model, plane, 2.5f), renderer_->renderCut(model, plane, 2.5f), "cut_slanted");
+  }
+
+  void everyFeatureTurnedUp() {
+    Project project = demoProject(11);
+    WoodParameters& p = project.params;
+    p.distortionAmplitude = 3, p.distortionScale = 6, p.rayDensity = 1, p.rayOpacity = 1, p.rayWidth = 0.2f;
+    p.poreDensityLate = 0.8f, p.fiberStrength = 0.8f, p.mottleStrength = 0.6f, p.ringColorVariation = 0.8f;
+    p.sapwoodStart = 22, p.pithTilt = 25, p.pithOrigin = {3, 0, -30};
+    project.rates = synthesizeGrowthRates(p, project.block);
+    const WoodModel model(project);
+    compare(renderFace(model, FaceId::B, {128, 128}), renderer_->renderFace(model, FaceId::B, {128, 128}),
+            "busy_face_B");
+    const CutPlane plane({0, 0, 0}, {1, 1, 1});
+    compare(renderCut(model, plane, 2.0f), renderer_->renderCut(model, plane, 2.0f), "busy_cut");
+  }
+
+ private:
+  void compare(const Image& cpu, const Image& gpu, const QString& name) {
+    QCOMPARE(gpu.width, cpu.width);
+    QCOMPARE(gpu.height, cpu.height);
+    QCOMPARE(gpu.channels, cpu.channels);
+    const QString dir = QStringLiteral(KERF_TEST_ARTIFACTS);
+    writeImage((dir + "/parity_" + name + "_cpu.png").toStdString(), cpu);
+    writeImage((dir + "/parity_" + name + "_gpu.png").toStdString(), gpu);
+    const ImageDifference d = compareImages(cpu, gpu, kPixelTolerance);
+    qInfo().noquote() << name << "mean abs" << d.meanAbs << "share over" << kPixelTolerance
+                      << d.shareOverTolerance;
+    QVERIFY2(d.meanAbs < kMaxMeanAbs, qPrintable(name + " mean difference too large"));
+    QVERIFY2(d.shareOverTolerance < kMaxShareOver, qPrintable(name + " too many differing pixels"));
+  }
+
+  std::unique_ptr<QOpenGLContext> context_;
+  std::unique_ptr<QOffscreenSurface> surface_;
+  std::unique_ptr<GpuImageRenderer> renderer_;
+};
+
+QTEST_MAIN(GpuParityTest)
+#include "test_gpu_parity.moc"

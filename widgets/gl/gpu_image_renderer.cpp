@@ -1,0 +1,87 @@
+#include "gl/gpu_image_renderer.hpp"
+
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLFramebufferObject>
+#include <QVector3D>
+#include <cmath>
+
+#include "gl/wood_program.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+namespace {
+
+QVector3D toQt(glm::vec3 v) {
+  return {v.x, v.y, v.z};
+}
+QOpenGLExtraFunctions* gl() {
+  return QOpenGLContext::currentContext()->extraFunctions();
+}
+
+}  // namespace
+
+GpuImageRenderer::GpuImageRenderer()
+    : program_(std::make_unique<WoodProgram>("image_plane.vert", "image_plane.frag")) {
+  gl()->glGenVertexArrays(1, &vertexArray_);  // core profile: drawing needs a bound VAO
+}
+
+GpuImageRenderer::~GpuImageRenderer() {
+  if (QOpenGLContext::currentContext()) gl()->glDeleteVertexArrays(1, &vertexArray_);
+}
+
+Image GpuImageRenderer::draw(const WoodModel& model, glm::vec3 origin, glm::vec3 pixelRight,
+                             glm::vec3 pixelDown, glm::ivec2 size, int faceIndex, bool clip, int channels) {
+  QOpenGLFramebufferObjectFormat format;
+  format.setInternalTextureFormat(0x8814);  // GL_RGBA32F: no 8-bit rounding before the comparison
+  QOpenGLFramebufferObject fbo(size.x, size.y, format);
+  if (!fbo.isValid() || !fbo.bind()) throw std::runtime_error("cannot create a float framebuffer");
+  QOpenGLExtraFunctions* f = gl();
+  f->glViewport(0, 0, size.x, size.y);
+  f->glDisable(GL_BLEND);
+  f->glDisable(GL_DEPTH_TEST);
+  QOpenGLShaderProgram& program = program_->program();
+  program.bind();
+  program_->setModel(model);
+  program.setUniformValue("u_planeOrigin", toQt(origin));
+  program.setUniformValue("u_pixelRight", toQt(pixelRight));
+  program.setUniformValue("u_pixelDown", toQt(pixelDown));
+  program.setUniformValue("u_imageHeight", static_cast<float>(size.y));
+  program.setUniformValue("u_faceIndex", faceIndex);
+  program.setUniformValue("u_blockHalfSize", toQt(model.block().halfSize()));
+  program.setUniformValue("u_clipToBlock", clip);
+  f->glBindVertexArray(vertexArray_);
+  f->glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  std::vector<float> rgba(static_cast<std::size_t>(size.x) * size.y * 4);
+  f->glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_FLOAT, rgba.data());
+  fbo.release();
+  program.release();
+  Image image(size.x, size.y, channels);
+  for (int y = 0; y < size.y; ++y)  // OpenGL rows are bottom-up
+    for (int x = 0; x < size.x; ++x) {
+      const float* s = &rgba[(static_cast<std::size_t>(size.y - 1 - y) * size.x + x) * 4];
+      std::copy_n(s, channels, image.pixel(x, y));
+    }
+  return image;
+}
+
+Image GpuImageRenderer::renderFace(const WoodModel& model, FaceId face, glm::ivec2 size) {
+  const Block& block = model.block();
+  const glm::vec3 origin = block.imageToBlock(face, {0, 0}, size);
+  const glm::vec3 right = block.imageToBlock(face, {1, 0}, size) - origin;
+  const glm::vec3 down = block.imageToBlock(face, {0, 1}, size) - origin;
+  return draw(model, origin, right, down, size, faceIndex(face), false, 3);
+}
+
+Image GpuImageRenderer::renderCut(const WoodModel& model, const CutPlane& plane, float pxPerMm) {
+  const auto bounds = plane.boundsInBlock(model.block());
+  if (!bounds) throw InputError("the cut plane does not pass through the block");
+  const glm::vec2 extent = bounds->max - bounds->min;
+  const glm::ivec2 size(std::max(1, static_cast<int>(std::ceil(extent.x * pxPerMm - 1e-3f))),
+                        std::max(1, static_cast<int>(std::ceil(extent.y * pxPerMm - 1e-3f))));
+  const glm::vec3 origin = plane.toBlock({bounds->min.x, bounds->max.y});  // same layout as core's renderCut
+  return draw(model, origin, plane.right() / pxPerMm, -plane.up() / pxPerMm, size, -1, true, 4);
+}
+
+}  // namespace kerf

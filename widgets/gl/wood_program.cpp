@@ -1,0 +1,79 @@
+#include "gl/wood_program.hpp"
+
+#include <QFile>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QVector3D>
+#include <stdexcept>
+
+#include "params/parameter_schema.hpp"
+
+namespace kerf {
+namespace {
+
+QVector3D toQt(glm::vec3 v) {
+  return {v.x, v.y, v.z};
+}
+
+}  // namespace
+
+QString WoodProgram::shaderFile(const QString& name) {
+  QFile file(":/shaders/" + name);
+  if (!file.open(QIODevice::ReadOnly))
+    throw std::runtime_error("missing shader resource " + name.toStdString());
+  return QString::fromUtf8(file.readAll());
+}
+
+QString WoodProgram::fragmentSource(const QString& fragmentFile) {
+  return "#version 330 core\n" + QString::fromStdString(glslUniformDeclarations()) +
+         shaderFile("wood_model.glsl") + "\n#line 1 1\n" + shaderFile(fragmentFile);
+}
+
+WoodProgram::WoodProgram(const QString& vertexFile, const QString& fragmentFile) {
+  const QString vertex = "#version 330 core\n" + shaderFile(vertexFile);
+  if (!program_.addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
+      !program_.addShaderFromSourceCode(QOpenGLShader::Fragment, fragmentSource(fragmentFile)) ||
+      !program_.link()) {
+    throw std::runtime_error("wood shader failed to build: " + program_.log().toStdString());
+  }
+}
+
+WoodProgram::~WoodProgram() = default;
+
+void WoodProgram::setModel(const WoodModel& model) {
+  const WoodParameters& params = model.params();
+  const auto schema = parameterSchema();
+  for (std::size_t i = 0; i < schema.size(); ++i) {
+    const QByteArray name = "u_" + QByteArray(schema[i].name.data(), static_cast<int>(schema[i].name.size()));
+    const auto values = params.components(i);
+    if (values.size() == 3)
+      program_.setUniformValue(name.constData(), QVector3D(values[0], values[1], values[2]));
+    else
+      program_.setUniformValue(name.constData(), values[0]);
+  }
+  const GrowthField& field = model.field();
+  const PithAxis& axis = field.axis();
+  program_.setUniformValue("u_axisOrigin", toQt(axis.origin));
+  program_.setUniformValue("u_axisDirection", toQt(axis.direction));
+  program_.setUniformValue("u_axisReference", toQt(axis.reference));
+  program_.setUniformValue("u_axisBinormal", toQt(axis.binormal));
+
+  const GrowthRates& rates = field.rates();
+  QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+  gl->glUniform3i(program_.uniformLocation("u_gridSize"), rates.heights, rates.azimuths, rates.radii);
+  // glUniform1ui directly: QOpenGLShaderProgram's GLuint overload goes through glUniform1i.
+  gl->glUniform1ui(program_.uniformLocation("u_hashSeed"), model.material().hashSeed());
+  program_.setUniformValue("u_gridRange", rates.heightMin, rates.heightMax, rates.radiusMin, rates.radiusMax);
+
+  growthTable_ = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target3D);
+  growthTable_->setFormat(QOpenGLTexture::R32F);
+  growthTable_->setSize(rates.radii + 1, rates.azimuths, rates.heights);
+  growthTable_->setMipLevels(1);
+  growthTable_->allocateStorage(QOpenGLTexture::Red, QOpenGLTexture::Float32);
+  growthTable_->setMinMagFilters(QOpenGLTexture::Nearest, QOpenGLTexture::Nearest);
+  growthTable_->setData(QOpenGLTexture::Red, QOpenGLTexture::Float32, field.cumulative().data());
+  growthTable_->bind(0);
+  program_.setUniformValue("u_growthTable", 0);
+}
+
+}  // namespace kerf

@@ -1,0 +1,36 @@
+#pragma once
+// The GLSL wood model (shaders/wood_model.glsl) as an OpenGL program: assembles the shader source
+// with the schema's uniform declarations, and uploads a WoodModel (parameters, pith axis, growth table).
+// Needs a current OpenGL 3.3 core context.
+#include <QOpenGLShaderProgram>
+#include <QOpenGLTexture>
+#include <QString>
+#include <memory>
+
+#include "render/wood_model.hpp"
+
+namespace kerf {
+
+class WoodProgram {
+ public:
+  // Compiles `vertexFile` and `fragmentFile` (names in the :/shaders resource) with the wood model
+  // linked into the fragment stage. Throws std::runtime_error with the compiler log on failure.
+  WoodProgram(const QString& vertexFile, const QString& fragmentFile);
+  ~WoodProgram();
+
+  QOpenGLShaderProgram& program() { return program_; }
+
+  // Uploads every schema parameter, the pith frame, the growth table (texture unit 0) and the seed.
+  // Call with the program bound.
+  void setModel(const WoodModel& model);
+
+  // The full fragment-stage source, as compiled (for tests and error messages).
+  static QString fragmentSource(const QString& fragmentFile);
+  static QString shaderFile(const QString& name);
+
+ private:
+  QOpenGLShaderProgram program_;
+  std::unique_ptr<QOpenGLTexture> growthTable_;
+};
+
+}  // namespace kerf
