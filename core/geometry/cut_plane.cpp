@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <limits>
 
 #include "util/error.hpp"
@@ -62,6 +63,33 @@ std::optional<PlaneRect> CutPlane::boundsInBlock(const Block& block) const {
   }
   if (!any || hi.x - lo.x <= 0.0f || hi.y - lo.y <= 0.0f) return std::nullopt;
   return PlaneRect{lo, hi};
+}
+
+}  // namespace kerf
+
+namespace kerf {
+
+glm::vec3 CutPlaneSetting::normal() const {
+  const float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+  return {std::cos(el) * std::cos(az), std::sin(el), -std::cos(el) * std::sin(az)};
+}
+
+CutPlaneSetting CutPlaneSetting::fromPlane(const CutPlane& plane) {
+  const glm::vec3 n = plane.normal();
+  CutPlaneSetting s;
+  s.offsetMm = glm::dot(plane.point(), n);
+  s.elevationDeg = glm::degrees(std::asin(std::clamp(n.y, -1.0f, 1.0f)));
+  s.azimuthDeg = (std::abs(n.x) < 1e-7f && std::abs(n.z) < 1e-7f) ? 0.0f : glm::degrees(std::atan2(-n.z, n.x));
+  return s;
+}
+
+CutPlaneSetting CutPlaneSetting::snapped(float step) const {
+  CutPlaneSetting s = *this;
+  if (step > 0.0f) {
+    s.azimuthDeg = std::round(azimuthDeg / step) * step;
+    s.elevationDeg = std::clamp(std::round(elevationDeg / step) * step, -90.0f, 90.0f);
+  }
+  return s;
 }
 
 }  // namespace kerf

@@ -41,3 +41,26 @@ class CutPlane {
 };
 
 }  // namespace kerf
+
+namespace kerf {
+
+// A cut plane as a person sets it: an offset from the block centre along the normal, and the normal's
+// direction as two angles (what the editor's numeric fields and the gizmo edit).
+// normal = (cos(elevation) cos(azimuth), sin(elevation), -cos(elevation) sin(azimuth)):
+// azimuth 0 / elevation 0 is +x (a plane parallel to faces C and E), elevation 90 is +y (a cross-section
+// parallel to B and D); azimuth turns around y from +x towards -z (azimuth 90 is -z), as the pith lean.
+struct CutPlaneSetting {
+  float offsetMm = 0.0f;
+  float azimuthDeg = 0.0f;
+  float elevationDeg = 0.0f;
+
+  glm::vec3 normal() const;
+  CutPlane plane() const { return CutPlane(offsetMm * normal(), normal()); }
+  static CutPlaneSetting fromPlane(const CutPlane& plane);  // offset measured from the block centre
+
+  // Angles rounded to multiples of `stepDeg` (the gizmo's snapping; 90 gives the principal planes).
+  CutPlaneSetting snapped(float stepDeg) const;
+  bool operator==(const CutPlaneSetting&) const = default;
+};
+
+}  // namespace kerf

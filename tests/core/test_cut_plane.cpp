@@ -53,3 +53,19 @@ TEST(CutPlane, RejectsDegenerateInput) {
   EXPECT_THROW(CutPlane({0, 0, 0}, {0, 0, 0}), InputError);
   EXPECT_THROW(CutPlane({std::nanf(""), 0, 0}, {0, 0, 1}), InputError);
 }
+
+TEST(CutPlaneSetting, AnglesAndSnapping) {
+  EXPECT_NEAR((CutPlaneSetting{0, 0, 0}).normal().x, 1.0f, 1e-6f);
+  EXPECT_NEAR((CutPlaneSetting{0, 0, 90}).normal().y, 1.0f, 1e-6f);
+  EXPECT_NEAR((CutPlaneSetting{0, 90, 0}).normal().z, -1.0f, 1e-6f);
+  const CutPlaneSetting s{3.5f, 37.0f, -22.0f};
+  const CutPlaneSetting back = CutPlaneSetting::fromPlane(s.plane());
+  EXPECT_NEAR(back.offsetMm, 3.5f, 1e-4f);
+  EXPECT_NEAR(back.azimuthDeg, 37.0f, 1e-3f);
+  EXPECT_NEAR(back.elevationDeg, -22.0f, 1e-3f);
+  const CutPlaneSetting snapped = s.snapped(15.0f);
+  EXPECT_FLOAT_EQ(snapped.azimuthDeg, 30.0f);
+  EXPECT_FLOAT_EQ(snapped.elevationDeg, -15.0f);
+  EXPECT_FLOAT_EQ(snapped.offsetMm, 3.5f);
+  EXPECT_FLOAT_EQ(CutPlaneSetting({0, 50, 80}).snapped(90.0f).elevationDeg, 90.0f);
+}
