@@ -17,9 +17,10 @@ Project demoProject(std::uint32_t seed) {
   Project project;
   project.block = Block(glm::vec3(40.0f));
   project.params.seed = static_cast<float>(seed);
-  // The schema defaults describe a ring-porous hardwood (chestnut-like) with the pith below face D
-  // side and behind face F; the demo uses them as they are, so "defaults" and "demo" agree.
-  project.rates = synthesizeGrowthRates(project.params, project.block);
+  // The schema defaults describe a ring-porous hardwood (chestnut-like) with the pith outside the
+  // block behind face F; the demo uses them as they are, so "defaults" and "demo" agree. The growth
+  // rates stay synthesised from the parameters (so the editor's growth sliders act on the demo);
+  // truth.json records them explicitly.
   return project;
 }
 
@@ -76,7 +77,7 @@ DemoFiles writeDemo(const fs::path& folder, const DemoOptions& options, const Pr
                           {"samples_per_pixel_side", options.samples},
                           {"photo_look", options.photoLook},
                           {"parameters", parametersToJson(project.params)},
-                          {"growth_rates", growthRatesToJson(*project.rates)}};
+                          {"growth_rates", growthRatesToJson(project.effectiveRates())}};
   writeTextAtomically(files.truth, truth.dump(2) + "\n");
   files.project = folder / "demo.kerf";
   saveProject(project, files.project);

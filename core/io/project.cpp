@@ -120,6 +120,13 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
               {"faces", faces},
               {"parameters", parametersToJson(project.params)}};
   if (project.rates) out["growth_rates"] = growthRatesToJson(*project.rates);
+  if (project.cutPlane) {
+    out["view"] = {{"cut_plane",
+                    {{"offset_mm", project.cutPlane->offsetMm},
+                     {"azimuth_deg", project.cutPlane->azimuthDeg},
+                     {"elevation_deg", project.cutPlane->elevationDeg},
+                     {"enabled", project.cutEnabled}}}};
+  }
   return out;
 }
 
@@ -160,6 +167,16 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   if (in.contains("parameters")) project.params = parametersFromJson(in["parameters"]);
   if (in.contains("growth_rates") && !in["growth_rates"].is_null()) {
     project.rates = growthRatesFromJson(in["growth_rates"]);
+  }
+  if (in.contains("view") && in["view"].is_object() && in["view"].contains("cut_plane")) {
+    const json& cut = in["view"]["cut_plane"];
+    if (!cut.is_object()) throw InputError("\"view.cut_plane\" must be an object");
+    CutPlaneSetting setting;
+    setting.offsetMm = readNumber(cut.value("offset_mm", json(0.0)), "view.cut_plane.offset_mm");
+    setting.azimuthDeg = readNumber(cut.value("azimuth_deg", json(0.0)), "view.cut_plane.azimuth_deg");
+    setting.elevationDeg = readNumber(cut.value("elevation_deg", json(0.0)), "view.cut_plane.elevation_deg");
+    project.cutPlane = setting;
+    project.cutEnabled = cut.value("enabled", false);
   }
   return project;
 }

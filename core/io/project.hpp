@@ -9,6 +9,7 @@
 
 #include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
+#include "geometry/cut_plane.hpp"
 #include "params/parameter_schema.hpp"
 
 namespace kerf {
@@ -24,6 +25,9 @@ struct Project {
   std::optional<GrowthRates> rates;
   // Face photos A..F; empty when a face has none. Absolute paths in memory.
   std::array<std::filesystem::path, 6> facePhotos;
+  // The editor's cut plane, kept with the project so a saved view opens as it was left.
+  std::optional<CutPlaneSetting> cutPlane;
+  bool cutEnabled = false;
 
   GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
 };

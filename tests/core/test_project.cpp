@@ -49,6 +49,8 @@ TEST(Project, RoundTripKeepsEverySchemaValueAndTheRates) {
   project.rates->at(1, 2, 3) = -0.5f;
   project.facePhotos[0] = dir / "photos" / "A_col.png";
   project.facePhotos[4] = dir / "E.jpg";
+  project.cutPlane = CutPlaneSetting{2.5f, 30.0f, -15.0f};
+  project.cutEnabled = true;
   saveProject(project, dir / "p.kerf");
 
   const Project loaded = loadProject(dir / "p.kerf");
@@ -59,6 +61,9 @@ TEST(Project, RoundTripKeepsEverySchemaValueAndTheRates) {
   EXPECT_EQ(loaded.facePhotos[0], project.facePhotos[0]);
   EXPECT_EQ(loaded.facePhotos[4], project.facePhotos[4]);
   EXPECT_TRUE(loaded.facePhotos[1].empty());
+  ASSERT_TRUE(loaded.cutPlane);
+  EXPECT_EQ(*loaded.cutPlane, *project.cutPlane);
+  EXPECT_TRUE(loaded.cutEnabled);
 
   // Photo paths are stored relative to the project, so a moved folder still opens.
   std::ifstream in(dir / "p.kerf");

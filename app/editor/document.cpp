@@ -1,0 +1,118 @@
+#include "document.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <nlohmann/json.hpp>
+
+#include "document_commands.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+
+Document::Document(QObject* parent) : QObject(parent) {
+  connect(&undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+  rebuildModel();
+}
+
+void Document::reset(const Project& project, const QString& path, const QString& name,
+                     const std::array<QImage, 6>& photos) {
+  project_ = project;
+  photos_ = photos;
+  path_ = path;
+  name_ = name;
+  undo_.clear();
+  undo_.setClean();
+  dirtyWithoutUndo_ = false;
+  rebuildModel();
+  emit documentReset();
+  emit modelChanged();
+  emit cutPlaneChanged();
+  emit photosChanged();
+  emit modifiedChanged(false);
+}
+
+bool Document::hasPhotos() const {
+  for (const QImage& photo : photos_)
+    if (!photo.isNull()) return true;
+  return false;
+}
+
+void Document::rebuildModel() {
+  model_ = std::make_shared<const WoodModel>(project_);
+}
+
+void Document::editParameter(std::size_t index, std::array<float, 3> value, bool finished) {
+  std::array<float, 3> before{};
+  const auto current = project_.params.components(index);
+  for (std::size_t c = current.size(); c < 3; ++c) value[c] = 0.0f;  // scalars use the first component only
+  std::copy(current.begin(), current.end(), before.begin());
+  WoodParameters candidate = project_.params;  // refuse a bad value before it reaches the undo stack
+  std::copy_n(value.begin(), current.size(), candidate.components(index).begin());
+  validate(candidate);
+  undo_.push(new SetParameterCommand(this, index, before, value, finished));
+}
+
+void Document::applyParameters(const WoodParameters& params, const QString& undoText) {
+  validate(params);
+  undo_.push(new SetAllParametersCommand(this, project_.params, params, undoText));
+}
+
+void Document::editCutPlane(const CutPlaneSetting& setting, bool finished) {
+  undo_.push(new SetCutPlaneCommand(this, cutPlane(), setting, finished));
+}
+
+void Document::replacePhoto(FaceId face, const QString& path, const QImage& image) {
+  const int i = faceIndex(face);
+  undo_.push(new ReplacePhotoCommand(this, face, QString::fromStdString(project_.facePhotos[i].string()),
+                                     photos_[i], path, image));
+}
+
+void Document::setCutEnabled(bool enabled) {
+  if (project_.cutEnabled == enabled) return;
+  project_.cutEnabled = enabled;
+  if (!project_.cutPlane) project_.cutPlane = CutPlaneSetting{};
+  dirtyWithoutUndo_ = true;
+  emit cutPlaneChanged();
+  emit modifiedChanged(true);
+}
+
+void Document::applyParameterValue(std::size_t index, std::array<float, 3> value) {
+  const auto target = project_.params.components(index);
+  std::copy_n(value.begin(), target.size(), target.begin());
+  rebuildModel();
+  emit modelChanged();
+}
+
+void Document::applyAllParameters(const WoodParameters& params) {
+  project_.params = params;
+  rebuildModel();
+  emit modelChanged();
+}
+
+void Document::applyCutPlane(const CutPlaneSetting& setting) {
+  project_.cutPlane = setting;
+  emit cutPlaneChanged();
+}
+
+void Document::applyPhoto(FaceId face, const QString& path, const QImage& image) {
+  project_.facePhotos[faceIndex(face)] = path.toStdString();
+  photos_[faceIndex(face)] = image;
+  emit photosChanged();
+}
+
+void Document::saveAs(const QString& path) {
+  saveProject(project_, path.toStdString());
+  path_ = QFileInfo(path).absoluteFilePath();
+  name_ = QFileInfo(path).completeBaseName();
+  dirtyWithoutUndo_ = false;
+  undo_.setClean();
+  emit documentReset();
+  emit modifiedChanged(false);
+}
+
+QByteArray Document::snapshot(const QString& folder) const {
+  const std::string text = projectToJson(project_, std::filesystem::absolute(folder.toStdString())).dump(2);
+  return QByteArray::fromStdString(text);
+}
+
+}  // namespace kerf

@@ -1,0 +1,81 @@
+#pragma once
+// The open document of the editor: the project (block, parameters, growth rates, photos, cut plane),
+// its file, and the undo stack through which every edit goes. Views observe its signals; they never
+// change it directly. The wood model is rebuilt after each edit (cheap: milliseconds) and shared
+// read-only with views and background jobs.
+#include <QImage>
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+#include <array>
+#include <memory>
+
+#include "geometry/cut_plane.hpp"
+#include "io/project.hpp"
+#include "render/wood_model.hpp"
+
+namespace kerf {
+
+class Document : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit Document(QObject* parent = nullptr);
+
+  // Replaces the whole content (after opening a file); clears the undo history and marks it clean.
+  // `path` is a .kerf file, or empty for a document that has no project file yet (a sample folder, the
+  // demo in the cache): Save then asks where to save.
+  void reset(const Project& project, const QString& path, const QString& name,
+             const std::array<QImage, 6>& photos);
+
+  const Project& project() const { return project_; }
+  std::shared_ptr<const WoodModel> model() const { return model_; }
+  const std::array<QImage, 6>& photos() const { return photos_; }
+  bool hasPhotos() const;
+  QString filePath() const { return path_; }
+  QString name() const { return name_; }
+  bool isModified() const { return !undo_.isClean() || dirtyWithoutUndo_; }
+  QUndoStack* undoStack() { return &undo_; }
+  CutPlaneSetting cutPlane() const { return project_.cutPlane.value_or(CutPlaneSetting{}); }
+  bool cutEnabled() const { return project_.cutEnabled; }
+
+  // Edits. Each pushes an undo command; unfinished edits of the same thing (a slider or a plane being
+  // dragged) merge into one step, closed by the edit with finished = true.
+  void editParameter(std::size_t index, std::array<float, 3> value, bool finished);
+  void applyParameters(const WoodParameters& params, const QString& undoText);
+  void editCutPlane(const CutPlaneSetting& setting, bool finished);
+  void replacePhoto(FaceId face, const QString& path, const QImage& image);
+  // The cut's visibility is a view setting: saved with the project, but not an undo step.
+  void setCutEnabled(bool enabled);
+
+  // Writes the project atomically to `path` (photos relative to it) and makes it the document's file.
+  // Throws InputError.
+  void saveAs(const QString& path);
+  // The project as it would be saved next to `folder` (for autosave).
+  QByteArray snapshot(const QString& folder) const;
+
+  // Used by the undo commands only: set a value without pushing a command.
+  void applyParameterValue(std::size_t index, std::array<float, 3> value);
+  void applyAllParameters(const WoodParameters& params);
+  void applyCutPlane(const CutPlaneSetting& setting);
+  void applyPhoto(FaceId face, const QString& path, const QImage& image);
+
+ signals:
+  void modelChanged();     // parameters or growth rates changed: model() is new
+  void cutPlaneChanged();  // setting or visibility
+  void photosChanged();
+  void documentReset();  // a different document (or file) is now open
+  void modifiedChanged(bool modified);
+
+ private:
+  void rebuildModel();
+
+  Project project_;
+  std::shared_ptr<const WoodModel> model_;
+  std::array<QImage, 6> photos_;
+  QString path_, name_;
+  QUndoStack undo_;
+  bool dirtyWithoutUndo_ = false;  // view settings changed since the last save
+};
+
+}  // namespace kerf

@@ -1,0 +1,88 @@
+#include "document_commands.hpp"
+
+#include "document.hpp"
+
+namespace kerf {
+
+SetParameterCommand::SetParameterCommand(Document* document, std::size_t index, std::array<float, 3> before,
+                                         std::array<float, 3> after, bool finished)
+    : document_(document), index_(index), before_(before), after_(after), finished_(finished) {
+  const ParamSpec& spec = parameterSchema()[index];
+  setText(QObject::tr("Change %1")
+              .arg(QString::fromUtf8(spec.label.data(), static_cast<int>(spec.label.size()))));
+  // A no-change edit still closes an open drag (by merging); on its own the stack drops it.
+  setObsolete(before == after);
+}
+
+void SetParameterCommand::undo() {
+  document_->applyParameterValue(index_, before_);
+}
+void SetParameterCommand::redo() {
+  document_->applyParameterValue(index_, after_);
+}
+
+bool SetParameterCommand::mergeWith(const QUndoCommand* other) {
+  const auto* next = static_cast<const SetParameterCommand*>(other);
+  if (finished_ || next->index_ != index_) return false;
+  after_ = next->after_;
+  finished_ = next->finished_;
+  setObsolete(after_ == before_);  // dragged back to where it started
+  return true;
+}
+
+SetAllParametersCommand::SetAllParametersCommand(Document* document, const WoodParameters& before,
+                                                 const WoodParameters& after, const QString& text)
+    : document_(document), before_(before), after_(after) {
+  setText(text);
+  setObsolete(before == after);
+}
+
+void SetAllParametersCommand::undo() {
+  document_->applyAllParameters(before_);
+}
+void SetAllParametersCommand::redo() {
+  document_->applyAllParameters(after_);
+}
+
+SetCutPlaneCommand::SetCutPlaneCommand(Document* document, const CutPlaneSetting& before,
+                                       const CutPlaneSetting& after, bool finished)
+    : document_(document), before_(before), after_(after), finished_(finished) {
+  setText(QObject::tr("Move cut plane"));
+  setObsolete(before == after);
+}
+
+void SetCutPlaneCommand::undo() {
+  document_->applyCutPlane(before_);
+}
+void SetCutPlaneCommand::redo() {
+  document_->applyCutPlane(after_);
+}
+
+bool SetCutPlaneCommand::mergeWith(const QUndoCommand* other) {
+  if (finished_) return false;
+  const auto* next = static_cast<const SetCutPlaneCommand*>(other);
+  after_ = next->after_;
+  finished_ = next->finished_;
+  setObsolete(after_ == before_);
+  return true;
+}
+
+ReplacePhotoCommand::ReplacePhotoCommand(Document* document, FaceId face, QString beforePath,
+                                         QImage beforeImage, QString afterPath, QImage afterImage)
+    : document_(document),
+      face_(face),
+      beforePath_(std::move(beforePath)),
+      afterPath_(std::move(afterPath)),
+      beforeImage_(std::move(beforeImage)),
+      afterImage_(std::move(afterImage)) {
+  setText(QObject::tr("Replace photo of face %1").arg(QChar(faceLetter(face))));
+}
+
+void ReplacePhotoCommand::undo() {
+  document_->applyPhoto(face_, beforePath_, beforeImage_);
+}
+void ReplacePhotoCommand::redo() {
+  document_->applyPhoto(face_, afterPath_, afterImage_);
+}
+
+}  // namespace kerf

@@ -1,0 +1,77 @@
+#pragma once
+// Undo commands of the editor (QUndoStack). Each stores both values and asks the Document to apply
+// one or the other. Parameter and cut-plane edits merge while a drag is under way (tiled's
+// ChangeValue pattern): the command stays open until an edit with finished = true arrives, and a drag
+// that ends where it started leaves no step behind.
+#include <QImage>
+#include <QUndoCommand>
+#include <array>
+
+#include "geometry/block.hpp"
+#include "geometry/cut_plane.hpp"
+#include "params/parameter_schema.hpp"
+
+namespace kerf {
+
+class Document;
+
+enum CommandId { kCutPlaneCommand = 1, kParameterCommandBase = 1000 };
+
+class SetParameterCommand : public QUndoCommand {
+ public:
+  SetParameterCommand(Document* document, std::size_t index, std::array<float, 3> before,
+                      std::array<float, 3> after, bool finished);
+  void undo() override;
+  void redo() override;
+  int id() const override { return kParameterCommandBase + static_cast<int>(index_); }
+  bool mergeWith(const QUndoCommand* other) override;
+
+ private:
+  Document* document_;
+  std::size_t index_;
+  std::array<float, 3> before_, after_;
+  bool finished_;
+};
+
+class SetAllParametersCommand : public QUndoCommand {
+ public:
+  SetAllParametersCommand(Document* document, const WoodParameters& before, const WoodParameters& after,
+                          const QString& text);
+  void undo() override;
+  void redo() override;
+
+ private:
+  Document* document_;
+  WoodParameters before_, after_;
+};
+
+class SetCutPlaneCommand : public QUndoCommand {
+ public:
+  SetCutPlaneCommand(Document* document, const CutPlaneSetting& before, const CutPlaneSetting& after,
+                     bool finished);
+  void undo() override;
+  void redo() override;
+  int id() const override { return kCutPlaneCommand; }
+  bool mergeWith(const QUndoCommand* other) override;
+
+ private:
+  Document* document_;
+  CutPlaneSetting before_, after_;
+  bool finished_;
+};
+
+class ReplacePhotoCommand : public QUndoCommand {
+ public:
+  ReplacePhotoCommand(Document* document, FaceId face, QString beforePath, QImage beforeImage,
+                      QString afterPath, QImage afterImage);
+  void undo() override;
+  void redo() override;
+
+ private:
+  Document* document_;
+  FaceId face_;
+  QString beforePath_, afterPath_;
+  QImage beforeImage_, afterImage_;
+};
+
+}  // namespace kerf

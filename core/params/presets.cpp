@@ -1,0 +1,170 @@
+#include "params/presets.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+
+#include "io/project.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr std::string_view kKeptIds[] = {
+    "growth.pith_origin", "growth.pith_tilt",   "growth.pith_azimuth", "growth.ring_offset",
+    "growth.eccentricity", "growth.eccentricity_direction", "faces.tint_a", "faces.tint_b",
+    "faces.tint_c",        "faces.tint_d",      "faces.tint_e",        "faces.tint_f",
+    "model.seed"};
+
+bool isKept(std::string_view id) {
+  return std::find(std::begin(kKeptIds), std::end(kKeptIds), id) != std::end(kKeptIds);
+}
+
+std::string readString(const json& in, const char* key, bool required) {
+  if (!in.contains(key)) {
+    if (required) throw InputError(std::string("the preset has no \"") + key + "\"");
+    return {};
+  }
+  if (!in[key].is_string()) throw InputError(std::string("\"") + key + "\" must be a string");
+  return in[key].get<std::string>();
+}
+
+bool validId(const std::string& id) {
+  return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  });
+}
+
+}  // namespace
+
+std::span<const std::string_view> presetKeptParameterIds() {
+  return kKeptIds;
+}
+
+WoodParameters Preset::parametersOnDefaults() const {
+  return parametersFromJson(parameters);
+}
+
+WoodParameters Preset::applyTo(const WoodParameters& base) const {
+  WoodParameters out = parametersOnDefaults();
+  for (std::string_view id : kKeptIds) {
+    const auto index = parameterIndex(id);
+    if (!index) continue;
+    const auto from = base.components(*index);
+    std::copy(from.begin(), from.end(), out.components(*index).begin());
+  }
+  validate(out);
+  return out;
+}
+
+Preset presetFromJson(const json& in) {
+  if (!in.is_object() || in.value("format", "") != kPresetFormatName) {
+    throw InputError(std::string("not a Kerf preset (missing \"format\": \"") + kPresetFormatName + "\")");
+  }
+  if (!in.contains("version") || !in["version"].is_number_integer()) {
+    throw InputError("the preset has no format version");
+  }
+  const int version = in["version"].get<int>();
+  if (version > kPresetFormatVersion) {
+    throw InputError("the preset was written by a newer Kerf (format version " + std::to_string(version) +
+                     "); this Kerf reads versions up to " + std::to_string(kPresetFormatVersion));
+  }
+  if (version < 1) throw InputError("unknown preset format version " + std::to_string(version));
+
+  Preset preset;
+  preset.id = readString(in, "id", true);
+  if (!validId(preset.id)) {
+    throw InputError("preset id \"" + preset.id + "\" must be lower-case letters, digits, '_' or '-'");
+  }
+  preset.name = readString(in, "name", true);
+  if (preset.name.empty()) throw InputError("preset \"" + preset.id + "\" has an empty name");
+  preset.latin = readString(in, "latin", false);
+  preset.mokumeCode = readString(in, "mokume_code", false);
+  preset.description = readString(in, "description", false);
+
+  if (!in.contains("parameters")) throw InputError("preset \"" + preset.id + "\" has no \"parameters\"");
+  preset.parameters = in["parameters"];
+  if (!preset.parameters.is_object()) {
+    throw InputError("\"parameters\" of preset \"" + preset.id + "\" must be an object of id: value pairs");
+  }
+  for (const auto& item : preset.parameters.items()) {
+    if (isKept(item.key())) {
+      throw InputError("preset \"" + preset.id + "\" sets \"" + item.key() +
+                       "\", which describes the block, not the species (presets keep it)");
+    }
+  }
+  try {
+    parametersFromJson(preset.parameters);  // ids known, values finite and inside the hard ranges
+  } catch (const InputError& e) {
+    throw InputError("preset \"" + preset.id + "\": " + e.what());
+  }
+  return preset;
+}
+
+json presetToJson(const Preset& preset) {
+  json out = {{"format", kPresetFormatName}, {"version", kPresetFormatVersion}, {"id", preset.id},
+              {"name", preset.name}};
+  if (!preset.latin.empty()) out["latin"] = preset.latin;
+  if (!preset.mokumeCode.empty()) out["mokume_code"] = preset.mokumeCode;
+  if (!preset.description.empty()) out["description"] = preset.description;
+  out["parameters"] = preset.parameters;
+  return out;
+}
+
+Preset loadPreset(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) throw InputError("cannot open preset " + file.string() + ": file not found or unreadable");
+  json in;
+  try {
+    in = json::parse(stream);
+  } catch (const json::parse_error& e) {
+    throw InputError("preset " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) + ")");
+  }
+  Preset preset;
+  try {
+    preset = presetFromJson(in);
+  } catch (const InputError& e) {
+    throw InputError("preset " + file.string() + ": " + e.what());
+  }
+  if (preset.id != file.stem().string()) {
+    throw InputError("preset " + file.string() + ": its id \"" + preset.id + "\" must match the file name");
+  }
+  return preset;
+}
+
+std::vector<Preset> loadPresets(const fs::path& folder) {
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) {
+    throw InputError("preset folder " + folder.string() + " does not exist or is not a folder");
+  }
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<Preset> presets;
+  std::set<std::string> ids;
+  for (const auto& file : files) {
+    presets.push_back(loadPreset(file));
+    if (!ids.insert(presets.back().id).second) {
+      throw InputError("preset " + file.string() + ": another preset already has the id \"" +
+                       presets.back().id + "\"");
+    }
+  }
+  std::sort(presets.begin(), presets.end(), [](const Preset& a, const Preset& b) {
+    return a.name != b.name ? a.name < b.name : a.id < b.id;
+  });
+  return presets;
+}
+
+const Preset* findPreset(std::span<const Preset> presets, std::string_view id) {
+  for (const Preset& preset : presets) {
+    if (preset.id == id) return &preset;
+  }
+  return nullptr;
+}
+
+}  // namespace kerf

@@ -1,0 +1,155 @@
+// The editor's document: undo steps (merged drags), validation, save/reopen, autosave.
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "autosave.hpp"
+#include "demo/demo_block.hpp"
+#include "document.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+
+namespace {
+std::size_t indexOf(const char* id) {
+  return *parameterIndex(id);
+}
+std::array<float, 3> scalar(float v) {
+  return {v, 0, 0};
+}
+}  // namespace
+
+class DocumentTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() { document_.reset(demoProject(), {}, "demo", {}); }
+
+  void sliderDragIsOneUndoStep() {
+    const std::size_t ring = indexOf("growth.ring_width");
+    const float before = document_.project().params.ringWidth;
+    QSignalSpy modelChanged(&document_, &Document::modelChanged);
+    document_.editParameter(ring, scalar(3.5f), false);
+    document_.editParameter(ring, scalar(4.0f), false);
+    document_.editParameter(ring, scalar(4.5f), true);
+    QCOMPARE(document_.undoStack()->count(), 1);
+    QCOMPARE(document_.project().params.ringWidth, 4.5f);
+    QCOMPARE(modelChanged.count(), 3);
+    QVERIFY(document_.isModified());
+    QCOMPARE(document_.undoStack()->undoText(), QString("Change Average ring width"));
+    document_.undoStack()->undo();
+    QCOMPARE(document_.project().params.ringWidth, before);
+    QVERIFY(!document_.isModified());
+    document_.undoStack()->redo();
+    QCOMPARE(document_.project().params.ringWidth, 4.5f);
+    // The model the views get is rebuilt from the parameters.
+    QCOMPARE(document_.model()->params().ringWidth, 4.5f);
+  }
+
+  void separateEditsAreSeparateSteps() {
+    const std::size_t ring = indexOf("growth.ring_width");
+    document_.editParameter(ring, scalar(3.5f), true);
+    document_.editParameter(ring, scalar(4.0f), true);
+    document_.editParameter(indexOf("rays.density"), scalar(0.2f), true);
+    QCOMPARE(document_.undoStack()->count(), 3);
+  }
+
+  void dragBackToTheStartLeavesNoStep() {
+    const std::size_t ring = indexOf("growth.ring_width");
+    const float before = document_.project().params.ringWidth;
+    document_.editParameter(ring, scalar(before + 1), false);
+    document_.editParameter(ring, scalar(before), true);
+    QCOMPARE(document_.undoStack()->count(), 0);
+    document_.editParameter(ring, scalar(before), true);  // no change at all
+    QCOMPARE(document_.undoStack()->count(), 0);
+  }
+
+  void badValuesAreRefusedBeforeTheUndoStack() {
+    QVERIFY_THROWS_EXCEPTION(InputError,
+                             document_.editParameter(indexOf("rays.density"), scalar(7.0f), true));
+    QVERIFY_THROWS_EXCEPTION(
+        InputError, document_.editParameter(indexOf("growth.ring_width"), scalar(std::nanf("")), true));
+    QCOMPARE(document_.undoStack()->count(), 0);
+  }
+
+  void colourAndPresetEdits() {
+    document_.editParameter(indexOf("color.latewood"), {0.1f, 0.2f, 0.3f}, true);
+    QCOMPARE(document_.project().params.latewoodColor, glm::vec3(0.1f, 0.2f, 0.3f));
+    WoodParameters preset = document_.project().params;
+    preset.poreDensityEarly = 0, preset.poreDensityLate = 0, preset.ringWidth = 5;
+    document_.applyParameters(preset, "Apply preset Spruce");
+    QCOMPARE(document_.undoStack()->count(), 2);
+    QCOMPARE(document_.project().params.ringWidth, 5.0f);
+    document_.undoStack()->undo();
+    QCOMPARE(document_.project().params.ringWidth, demoProject().params.ringWidth);
+    QCOMPARE(document_.project().params.latewoodColor, glm::vec3(0.1f, 0.2f, 0.3f));
+  }
+
+  void cutPlaneDragIsOneStep() {
+    QSignalSpy changed(&document_, &Document::cutPlaneChanged);
+    document_.editCutPlane({1, 0, 0}, false);
+    document_.editCutPlane({2, 10, 0}, false);
+    document_.editCutPlane({3, 15, 0}, true);
+    QCOMPARE(document_.undoStack()->count(), 1);
+    QCOMPARE(document_.cutPlane(), (CutPlaneSetting{3, 15, 0}));
+    QCOMPARE(changed.count(), 3);
+    document_.undoStack()->undo();
+    QCOMPARE(document_.cutPlane(), CutPlaneSetting{});
+  }
+
+  void photoReplacementIsUndoable() {
+    QImage red(8, 8, QImage::Format_RGB32);
+    red.fill(Qt::red);
+    document_.replacePhoto(FaceId::C, "/tmp/c.png", red);
+    QCOMPARE(document_.photos()[2].pixelColor(1, 1), QColor(Qt::red));
+    QCOMPARE(QString::fromStdString(document_.project().facePhotos[2].string()), QString("/tmp/c.png"));
+    document_.undoStack()->undo();
+    QVERIFY(document_.photos()[2].isNull());
+    QVERIFY(document_.project().facePhotos[2].empty());
+  }
+
+  void saveAndReopenRoundTrip() {
+    QTemporaryDir dir;
+    document_.editParameter(indexOf("growth.ring_width"), scalar(2.25f), true);
+    document_.editCutPlane({4, 30, 15}, true);
+    document_.setCutEnabled(true);
+    QVERIFY(document_.isModified());
+    const QString path = dir.filePath("saved.kerf");
+    document_.saveAs(path);
+    QVERIFY(!document_.isModified());
+    QCOMPARE(document_.filePath(), path);
+    QCOMPARE(document_.name(), QString("saved"));
+    const Project reopened = loadProject(path.toStdString());
+    QCOMPARE(reopened.params, document_.project().params);
+    QVERIFY(reopened.cutPlane.has_value());
+    QCOMPARE(*reopened.cutPlane, (CutPlaneSetting{4, 30, 15}));
+    QVERIFY(reopened.cutEnabled);
+    QVERIFY_THROWS_EXCEPTION(InputError, document_.saveAs(dir.filePath("missing/folder/x.kerf")));
+  }
+
+  void autosaveKeepsUnsavedWorkAndCleansUp() {
+    QTemporaryDir dir;
+    Autosave autosave(&document_, dir.path(), 60000);
+    autosave.saveNow();
+    QVERIFY(!QFile::exists(autosave.currentFile()));  // nothing unsaved yet
+    document_.editParameter(indexOf("growth.ring_width"), scalar(6.0f), true);
+    autosave.saveNow();
+    QVERIFY(QFile::exists(autosave.currentFile()));
+    const Project recovered = loadProject(autosave.currentFile().toStdString());
+    QCOMPARE(recovered.params.ringWidth, 6.0f);
+    QCOMPARE(Autosave::originalPathOf(autosave.currentFile()), QString());
+    // Another session's instance sees this copy as a leftover; this one does not.
+    Autosave other(&document_, dir.path(), 60000);
+    QCOMPARE(other.leftovers(), QStringList{QFileInfo(autosave.currentFile()).absoluteFilePath()});
+    QVERIFY(autosave.leftovers().isEmpty());
+    document_.undoStack()->undo();  // back to clean: the copy goes away
+    autosave.saveNow();
+    QVERIFY(!QFile::exists(autosave.currentFile()));
+  }
+
+ private:
+  Document document_;
+};
+
+QTEST_MAIN(DocumentTest)
+#include "test_document.moc"
