@@ -1,16 +1,31 @@
 #pragma once
 // The six faces of a block laid out as the unfolded Mokume cross (B above A, D below, C left, E and F
 // to the right; see kerf::crossSlot), each labelled with its letter, scaled to fit with the block's
-// proportions kept. Faces are placed by their size in mm, so photos of any resolution line up.
+// proportions kept. Faces are placed by their size in mm, so photos of any resolution line up, and
+// edges that touch in the cross are the same edge of the block (docs/coordinates.md).
+//
+// Two sets of images: the photos and the model's renderings. The view shows the photos, the model,
+// or both with the model blended over the photos at an opacity (FaceDisplay). A set that is empty
+// stands in for the other, so a project without photos still shows its renderings.
+//
+// Navigation: the wheel zooms towards the cursor along a ladder of factors (1 = fit); middle-drag or
+// Space + left-drag pans; F or a double-click fits; +/- zoom about the centre.
+// The cursor's face, pixel and block position (mm) are reported by cursorPositionChanged().
+// Drag and drop: an image file (png, jpg, tif) dropped onto a face -> photoDropped(face, path); several
+// images at once go to the faces their names start with ("A_col.png" -> A); a .kerf file or a folder
+// -> documentDropped(path).
 #include <QImage>
 #include <QRectF>
 #include <QString>
 #include <QWidget>
 #include <array>
+#include <optional>
 
 #include "geometry/block.hpp"
 
 namespace kerf {
+
+enum class FaceDisplay { Photos, Model, Blend };
 
 class FacesView : public QWidget {
   Q_OBJECT
@@ -18,12 +33,29 @@ class FacesView : public QWidget {
  public:
   explicit FacesView(QWidget* parent = nullptr);
 
-  // Faces in A..F order; a null image leaves its slot as an empty outline.
-  void setFaces(const std::array<QImage, 6>& faces, const Block& block);
-  void clear();
-  const std::array<QImage, 6>& faces() const { return faces_; }
+  // The block whose faces are shown (their sizes in mm lay out the cross).
+  void setBlock(const Block& block);
   const Block& block() const { return block_; }
+
+  // The two sets, A..F; a null image leaves its face as an empty outline.
+  void setPhotos(const std::array<QImage, 6>& photos);
+  void setRenderings(const std::array<QImage, 6>& renderings);
+  const std::array<QImage, 6>& photos() const { return photos_; }
+  const std::array<QImage, 6>& renderings() const { return renderings_; }
+
+  // Shows exactly `faces` (one set, nothing to blend): they become the photos, the renderings are
+  // cleared. Kept for the editor shell, which swaps the set itself.
+  void setFaces(const std::array<QImage, 6>& faces, const Block& block);
+  void clear();  // both sets
+  // The set drawn underneath: the photos (the model in Model display, or when there are no photos).
+  const std::array<QImage, 6>& faces() const;
   bool hasFaces() const;
+
+  void setDisplay(FaceDisplay display);
+  FaceDisplay display() const { return display_; }
+  // Opacity of the model over the photos in Blend display, 0 (photos only) .. 1 (model only).
+  void setBlendOpacity(double opacity);
+  double blendOpacity() const { return blendOpacity_; }
 
   // Shown centred while there are no faces ("Rendering faces…").
   void setPlaceholderText(const QString& text);
@@ -31,23 +63,81 @@ class FacesView : public QWidget {
   // A title and a line of detail, drawn in the empty corner right of B ("Photos", "Ctrl+T: …").
   void setCaption(const QString& title, const QString& detail = {});
 
-  // Where face `face` is drawn, in widget pixels (for tests and later overlays).
+  // Where face `face` is drawn, in widget pixels, with the current zoom and pan.
   QRectF faceRect(FaceId face) const;
+
+  // Zoom: 1 fits the cross into the view; steps follow zoomLadder().
+  double zoom() const { return zoom_; }
+  void setZoom(double zoom, std::optional<QPointF> anchor = std::nullopt);  // default anchor: the centre
+  void zoomIn(std::optional<QPointF> anchor = std::nullopt);
+  void zoomOut(std::optional<QPointF> anchor = std::nullopt);
+  void fitToView();
+  void panBy(QPointF deltaPx);
+  QPointF pan() const { return pan_; }
+  static const std::array<double, 16>& zoomLadder();
+
+  // What is under a widget point: the face, and the text cursorPositionChanged() sends ("" outside faces).
+  std::optional<FaceId> faceAt(QPointF widgetPos) const;
+  QString positionText(QPointF widgetPos) const;
+  // The block point (mm) under a widget point on a face.
+  std::optional<glm::vec3> blockPointAt(QPointF widgetPos) const;
 
   QSize sizeHint() const override { return {960, 720}; }
   QSize minimumSizeHint() const override { return {240, 180}; }
 
+ signals:
+  void cursorPositionChanged(const QString& text);
+  void photoDropped(kerf::FaceId face, const QString& path);
+  void documentDropped(const QString& path);
+  void zoomChanged(double zoom);
+  void displayChanged(kerf::FaceDisplay display);
+
  protected:
   void paintEvent(QPaintEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void keyReleaseEvent(QKeyEvent* event) override;
+  void leaveEvent(QEvent* event) override;
+  void focusOutEvent(QFocusEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dragMoveEvent(QDragMoveEvent* event) override;
+  void dragLeaveEvent(QDragLeaveEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
-  void drawLabel(class QPainter& painter, const QRectF& rect, FaceId face, qreal side) const;
+  struct Layers {
+    const std::array<QImage, 6>* base = nullptr;
+    const std::array<QImage, 6>* overlay = nullptr;  // drawn at blendOpacity_ over base
+  };
+  Layers layers() const;
+  QRectF fitRect(FaceId face) const;  // at zoom 1, no pan
+  QRectF faceRect(FaceId face, double zoom, QPointF pan) const;
+  static QPointF gapOffset(FaceId face);
+  void drawFace(class QPainter& painter, const QRectF& target, const QImage& image) const;
+  void drawLabel(QPainter& painter, const QRectF& rect, FaceId face, qreal side) const;
   void drawCaption(QPainter& painter) const;
+  void updateCursorText(std::optional<QPointF> widgetPos);
+  bool acceptDrag(class QDropEvent* event);  // sets dropFace_; true when the drop would do something
 
-  std::array<QImage, 6> faces_;
+  std::array<QImage, 6> photos_, renderings_;
   Block block_;
+  FaceDisplay display_ = FaceDisplay::Photos;
+  double blendOpacity_ = 0.5;
   QString placeholder_;
   QString captionTitle_, captionDetail_;
+
+  double zoom_ = 1.0;
+  QPointF pan_;  // widget pixels
+  double wheelAccumulator_ = 0;
+  bool spaceHeld_ = false;
+  bool panning_ = false;
+  QPointF lastMouse_;
+  QString lastCursorText_;
+  std::optional<FaceId> dropFace_;  // highlighted while an image is dragged over a face
 };
 
 }  // namespace kerf

@@ -76,6 +76,11 @@ void Document::setCutEnabled(bool enabled) {
   emit modifiedChanged(true);
 }
 
+void Document::markModified() {
+  dirtyWithoutUndo_ = true;
+  emit modifiedChanged(true);
+}
+
 void Document::applyParameterValue(std::size_t index, std::array<float, 3> value) {
   const auto target = project_.params.components(index);
   std::copy_n(value.begin(), target.size(), target.begin());

@@ -47,6 +47,8 @@ class Document : public QObject {
   void replacePhoto(FaceId face, const QString& path, const QImage& image);
   // The cut's visibility is a view setting: saved with the project, but not an undo step.
   void setCutEnabled(bool enabled);
+  // Marks the document as holding unsaved work (recovered from an autosave).
+  void markModified();
 
   // Writes the project atomically to `path` (photos relative to it) and makes it the document's file.
   // Throws InputError.

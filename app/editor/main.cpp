@@ -5,10 +5,12 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFileInfo>
+#include <QSurfaceFormat>
 #include <QTimer>
 #include <cstdio>
 
 #include "main_window.hpp"
+#include "viewport3d.hpp"
 
 namespace {
 
@@ -17,15 +19,20 @@ void fail(const QString& message) {
   QCoreApplication::exit(1);
 }
 
-// Saves the window as soon as the document is ready; exits 0 on success, 1 on any failure.
+// Saves the window once the document is ready and the 3D view has drawn at full resolution; exits 0
+// on success, 1 on any failure.
 void screenshotWhenReady(kerf::MainWindow& window, const QString& file) {
   QObject::connect(&window, &kerf::MainWindow::documentReady, &window, [&window, file] {
-    QDir().mkpath(QFileInfo(file).absolutePath());
-    if (window.grab().save(file)) {
-      QCoreApplication::exit(0);
-    } else {
-      fail(QStringLiteral("cannot write the screenshot %1").arg(file));
-    }
+    window.viewport()->refineNow();
+    // Give the GL views a few event-loop turns to draw their full-resolution frames.
+    QTimer::singleShot(400, &window, [&window, file] {
+      QDir().mkpath(QFileInfo(file).absolutePath());
+      if (window.grab().save(file)) {
+        QCoreApplication::exit(0);
+      } else {
+        fail(QStringLiteral("cannot write the screenshot %1").arg(file));
+      }
+    });
   });
   QObject::connect(&window, &kerf::MainWindow::documentFailed, &window, &fail);
 }
@@ -33,6 +40,11 @@ void screenshotWhenReady(kerf::MainWindow& window, const QString& file) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // One OpenGL format for every view (3D block, cut panel), so their contexts match.
+  QSurfaceFormat format;
+  format.setVersion(3, 3);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  QSurfaceFormat::setDefaultFormat(format);
   QApplication app(argc, argv);
   QApplication::setApplicationName(QStringLiteral("Kerf"));
   QApplication::setOrganizationName(QStringLiteral("Kerf"));
@@ -63,7 +75,10 @@ int main(int argc, char** argv) {
   if (parser.isSet(screenshot)) screenshotWhenReady(window, parser.value(screenshot));
   window.show();
   // Start from the event loop, so the window is up before the (possibly slow) demo generation.
-  QTimer::singleShot(0, &window, [&window, documents] {
+  const bool offerRecovery = !parser.isSet(screenshot) && qEnvironmentVariableIsEmpty("KERF_NO_RECOVERY");
+  QTimer::singleShot(0, &window, [&window, documents, offerRecovery] {
+    if (offerRecovery) window.offerRecovery();  // may open the recovered document instead
+    if (window.hasDocument()) return;
     if (documents.isEmpty()) {
       window.openDemo(kerf::defaultDemoFolder());
     } else {

@@ -1,76 +1,72 @@
 #include "main_window.hpp"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
-#include <QFileDialog>
+#include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileInfo>
-#include <QFutureWatcher>
+#include <QHBoxLayout>
 #include <QLabel>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QProgressBar>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSlider>
+#include <QSplitter>
 #include <QStatusBar>
-#include <QTimer>
-#include <QtConcurrent>
-#include <type_traits>
+#include <QToolBar>
+#include <QUndoView>
+#include <QVBoxLayout>
 
+#include "autosave.hpp"
+#include "builtin_presets.hpp"
+#include "cut_plane_controls.hpp"
+#include "cut_view.hpp"
+#include "document.hpp"
 #include "faces_view.hpp"
+#include "job_runner.hpp"
+#include "job_status_widget.hpp"
+#include "log_panel.hpp"
+#include "parameter_panel.hpp"
+#include "qt_image.hpp"
+#include "recent_files.hpp"
+#include "render/renderers.hpp"
+#include "util/error.hpp"
+#include "viewport3d.hpp"
 
 namespace kerf {
 
-namespace {
-
-const QString kRendering = QStringLiteral("Rendering faces…");
-
-// Runs `work` on `pool` and hands its result to `done` on the GUI thread (the watcher lives in
-// `owner`, so nothing is delivered once the window is gone).
-template <class Work, class Done>
-void runAsync(QObject* owner, QThreadPool* pool, Work work, Done done) {
-  using Result = std::invoke_result_t<Work>;
-  auto* watcher = new QFutureWatcher<Result>(owner);
-  QObject::connect(watcher, &QFutureWatcher<Result>::finished, owner, [watcher, done] {
-    done(watcher->result());
-    watcher->deleteLater();
-  });
-  watcher->setFuture(QtConcurrent::run(pool, std::move(work)));
-}
-
-// The file dialog picks files, so a sample folder is opened by picking one of its face photos.
-QString documentPathFor(const QString& chosen) {
-  const QFileInfo info(chosen);
-  return info.suffix().compare("kerf", Qt::CaseInsensitive) == 0 ? chosen : info.absolutePath();
-}
-
-}  // namespace
-
 MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(parent), settings_(settings) {
-  pool_.setMaxThreadCount(2);  // a new job may start while a cancelled one winds down
-  facesView_ = new FacesView(this);
-  setCentralWidget(facesView_);
+  document_ = new Document(this);
+  jobs_ = new JobRunner(this);
+  createViews();
+  createDocks();
   createMenus();
+  connectDocument();
+  autosave_ = new Autosave(document_, {}, 5000, this);
+  connect(autosave_, &Autosave::failed, this, [this](const QString& m) { logMessage("warning", m); });
 
-  statusLabel_ = new QLabel(this);
-  progressBar_ = new QProgressBar(this);
-  progressBar_->setRange(0, 100);
-  progressBar_->setMaximumWidth(200);
-  progressBar_->setVisible(false);
-  statusBar()->addWidget(statusLabel_, 1);
-  statusBar()->addPermanentWidget(progressBar_);
-  // Workers store their progress in an atomic; the GUI polls it rather than receive an event per row.
-  progressTimer_ = new QTimer(this);
-  progressTimer_->setInterval(100);
-  connect(progressTimer_, &QTimer::timeout, this, [this] {
-    if (progress_) progressBar_->setValue(static_cast<int>(progress_->load() * 100));
-  });
+  auto* status = new JobStatusWidget(jobs_, this);
+  documentLabel_ = new QLabel(this);
+  cursorLabel_ = new QLabel(this);
+  cursorLabel_->setMinimumWidth(360);
+  statusBar()->addWidget(documentLabel_, 1);
+  statusBar()->addPermanentWidget(cursorLabel_);
+  statusBar()->addPermanentWidget(status);
+  connect(jobs_, &JobRunner::message, this, &MainWindow::logMessage);
 
-  setWindowTitle(QStringLiteral("Kerf"));
+  setAcceptDrops(true);
   resize(1280, 800);
-  updateStatus();
+  restoreLayout();
+  updateTitle();
 }
 
 MainWindow::~MainWindow() {
-  stop_.request_stop();
-  pool_.waitForDone();  // jobs stop at the next row; core must not outlive the application
+  jobs_->cancelAll();
+  jobs_->waitForDone();
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
 }
 
 DemoOptions MainWindow::demoOptions() {
@@ -79,175 +75,314 @@ DemoOptions MainWindow::demoOptions() {
   return options;
 }
 
-void MainWindow::createMenus() {
-  QMenu* file = menuBar()->addMenu(tr("&File"));
-  QAction* open = file->addAction(tr("&Open Project or Sample Folder…"), this, &MainWindow::chooseDocument);
-  open->setShortcut(QKeySequence::Open);
-  file->addSeparator();
-  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-  quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
+void MainWindow::createViews() {
+  facesView_ = new FacesView(this);
+  facesView_->setPlaceholderText(tr("Opening…"));
+  viewport_ = new Viewport3D(this);
 
-  QMenu* view = menuBar()->addMenu(tr("&View"));
-  toggleViewAction_ = view->addAction(tr("Show &Model Rendering"), this, &MainWindow::toggleView);
-  toggleViewAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
-  toggleViewAction_->setEnabled(false);
+  // Above the faces: what they show, and how much of the model is blended over the photos.
+  auto* facesPane = new QWidget(this);
+  auto* facesBar = new QToolBar(facesPane);
+  facesBar->setIconSize(QSize(16, 16));
+  displayGroup_ = new QActionGroup(this);
+  const QString names[] = {tr("Photos"), tr("Model"), tr("Blend")};
+  const QString tips[] = {tr("Show the photographs of the faces (Ctrl+1)"),
+                          tr("Show the model's rendering of the faces (Ctrl+2)"),
+                          tr("Show the model over the photos; the slider sets how much (Ctrl+3)")};
+  for (int i = 0; i < 3; ++i) {
+    QAction* action = facesBar->addAction(names[i]);
+    action->setCheckable(true);
+    action->setToolTip(tips[i]);
+    action->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
+    action->setData(i);
+    displayGroup_->addAction(action);
+    connect(action, &QAction::triggered, this, [this, i] {
+      displayChosenByUser_ = true;
+      setFaceDisplay(i);
+    });
+  }
+  blendSlider_ = new QSlider(Qt::Horizontal, facesBar);
+  blendSlider_->setRange(0, 100);
+  blendSlider_->setValue(50);
+  blendSlider_->setMaximumWidth(160);
+  blendSlider_->setToolTip(tr("Opacity of the model over the photos in Blend mode"));
+  facesBar->addWidget(blendSlider_);
+  connect(blendSlider_, &QSlider::valueChanged, this,
+          [this](int v) { facesView_->setBlendOpacity(v / 100.0); });
+  auto* facesLayout = new QVBoxLayout(facesPane);
+  facesLayout->setContentsMargins(0, 0, 0, 0);
+  facesLayout->setSpacing(0);
+  facesLayout->addWidget(facesBar);
+  facesLayout->addWidget(facesView_, 1);
 
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
-  help->addAction(tr("&About Kerf"), this, [this] {
-    QMessageBox::about(this, tr("About Kerf"),
-                       tr("<b>Kerf</b> %1<br>An editor for the procedural appearance of solid wood.")
-                           .arg(QApplication::applicationVersion()));
+  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->addWidget(facesPane);
+  splitter->addWidget(viewport_);
+  splitter->setStretchFactor(0, 1);
+  splitter->setStretchFactor(1, 1);
+  setCentralWidget(splitter);
+
+  connect(facesView_, &FacesView::cursorPositionChanged, this,
+          [this](const QString& t) { cursorLabel_->setText(t); });
+  connect(facesView_, &FacesView::photoDropped, this, &MainWindow::dropPhoto);
+  connect(facesView_, &FacesView::documentDropped, this, [this](const QString& path) {
+    if (maybeSave()) openDocument(path);
   });
+  connect(viewport_, &Viewport3D::cutPlaneEdited, this,
+          [this](const CutPlaneSetting& s, bool finished) { document_->editCutPlane(s, finished); });
 }
 
-void MainWindow::chooseDocument() {
-  const QString chosen = QFileDialog::getOpenFileName(
-      this, tr("Open a project, or any face photo of a sample folder"), QString(),
-      tr("Projects and face photos (*.kerf *_col.png *_col.jpg *_col.jpeg *_col.tif *_col.tiff);;"
-         "Kerf projects (*.kerf);;All files (*)"));
-  if (!chosen.isEmpty()) openDocument(documentPathFor(chosen));
+void MainWindow::createDocks() {
+  setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+  parameterPanel_ = new ParameterPanel(this);
+  parameterPanel_->setPresets(builtInPresets());
+  auto* parameters = new QDockWidget(tr("Parameters"), this);
+  parameters->setObjectName("parametersDock");
+  parameters->setWidget(parameterPanel_);
+  addDockWidget(Qt::RightDockWidgetArea, parameters);
+  connect(parameterPanel_, &ParameterPanel::parameterEdited, this,
+          [this](int index, std::array<float, 3> value, bool finished) {
+            try {
+              document_->editParameter(static_cast<std::size_t>(index), value, finished);
+            } catch (const InputError& e) {
+              logMessage("error", QString::fromUtf8(e.what()));
+              parameterPanel_->setParameters(document_->project().params);  // back to what is valid
+            }
+          });
+  connect(parameterPanel_, &ParameterPanel::presetChosen, this, &MainWindow::applyPreset);
+
+  // The cut: numeric controls beside the true-scale cut panel.
+  cutView_ = new CutView(this);
+  cutControls_ = new CutPlaneControls(this);
+  auto* cutPane = new QWidget(this);
+  auto* cutLayout = new QHBoxLayout(cutPane);
+  cutLayout->setContentsMargins(2, 2, 2, 2);
+  // The controls scroll rather than squeeze when the dock is short.
+  auto* controlsScroll = new QScrollArea(cutPane);
+  controlsScroll->setWidget(cutControls_);
+  controlsScroll->setWidgetResizable(true);
+  controlsScroll->setFrameShape(QFrame::NoFrame);
+  controlsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  controlsScroll->setMinimumWidth(cutControls_->sizeHint().width() + 16);
+  cutLayout->addWidget(controlsScroll);
+  cutLayout->addWidget(cutView_, 1);
+  auto* cut = new QDockWidget(tr("Cut"), this);
+  cut->setObjectName("cutDock");
+  cut->setWidget(cutPane);
+  addDockWidget(Qt::BottomDockWidgetArea, cut);
+  connect(cutView_, &CutView::cursorPositionChanged, this,
+          [this](const QString& t) { cursorLabel_->setText(t); });
+  connect(cutControls_, &CutPlaneControls::settingEdited, this,
+          [this](const CutPlaneSetting& s, bool finished) { document_->editCutPlane(s, finished); });
+  connect(cutControls_, &CutPlaneControls::cutEnabledChanged, document_, &Document::setCutEnabled);
+  connect(cutControls_, &CutPlaneControls::cutSideChanged, this, [this](bool ghost) {
+    viewport_->setCutSide(ghost ? Viewport3D::CutSide::Ghost : Viewport3D::CutSide::Hide);
+  });
+
+  log_ = new LogPanel(this);
+  auto* logDock = new QDockWidget(tr("Log"), this);
+  logDock->setObjectName("logDock");
+  logDock->setWidget(log_);
+  addDockWidget(Qt::BottomDockWidgetArea, logDock);
+  connect(log_, &LogPanel::badgeTextChanged, this, [logDock](const QString& badge) {
+    logDock->setWindowTitle(badge.isEmpty() ? tr("Log") : tr("Log (%1)").arg(badge));
+  });
+
+  history_ = new QUndoView(document_->undoStack(), this);
+  history_->setEmptyLabel(tr("<opened>"));
+  auto* historyDock = new QDockWidget(tr("History"), this);
+  historyDock->setObjectName("historyDock");
+  historyDock->setWidget(history_);
+  addDockWidget(Qt::BottomDockWidgetArea, historyDock);
+  tabifyDockWidget(cut, logDock);
+  tabifyDockWidget(logDock, historyDock);
+  cut->raise();
+  // The faces and the 3D block get most of the window; the panels start compact.
+  resizeDocks({cut}, {300}, Qt::Vertical);
+  resizeDocks({parameters}, {430}, Qt::Horizontal);
 }
 
-void MainWindow::openDocument(const QString& path) {
-  startLoad(tr("Loading %1…").arg(QFileInfo(path).fileName()),
-            [path](const Progress&) { return loadDocumentFiles(path); });
+void MainWindow::restoreLayout() {
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
 }
 
-void MainWindow::openDemo(const QString& folder, const DemoOptions& options) {
-  startLoad(tr("Preparing the demo…"),
-            [folder, options](const Progress& progress) { return loadDemo(folder, options, progress); });
+void MainWindow::connectDocument() {
+  connect(document_, &Document::modelChanged, this, &MainWindow::modelChanged);
+  connect(document_, &Document::cutPlaneChanged, this, [this] {
+    const CutPlaneSetting setting = document_->cutPlane();
+    viewport_->setCutPlane(setting);
+    viewport_->setCutEnabled(document_->cutEnabled());
+    cutView_->setCutPlane(setting);
+    cutControls_->setSetting(setting);
+    cutControls_->setCutEnabled(document_->cutEnabled());
+  });
+  connect(document_, &Document::photosChanged, this, [this] {
+    facesView_->setPhotos(document_->photos());
+    viewport_->setFacePhotos(document_->photos());
+    updateFacesView();
+  });
+  connect(document_, &Document::documentReset, this, [this] {
+    facesView_->setBlock(document_->project().block);
+    cutControls_->setBlock(document_->project().block);
+    updateTitle();
+  });
+  connect(document_, &Document::modifiedChanged, this, [this](bool) { updateTitle(); });
 }
 
-Progress MainWindow::startJob(const QString& message) {
-  stop_.request_stop();
-  stop_ = std::stop_source();
-  ++generation_;
-  progress_ = std::make_shared<std::atomic<double>>(0.0);
-  busy_ = true;
-  busyMessage_ = message;
-  facesView_->setPlaceholderText(message);  // seen only while there is nothing else to show
-  progressBar_->setValue(0);
-  progressTimer_->start();
-  updateStatus();
-  return Progress{[p = progress_](double f) { p->store(f, std::memory_order_relaxed); }, stop_.get_token()};
+bool MainWindow::isBusy() const {
+  return jobs_->isBusy();
 }
 
-void MainWindow::finishJob() {
-  busy_ = false;
-  progressTimer_->stop();
-  updateStatus();
+bool MainWindow::showingPhotos() const {
+  return facesView_->display() == FaceDisplay::Photos && document_->hasPhotos();
 }
 
-void MainWindow::startLoad(const QString& what, std::function<LoadedDocument(const Progress&)> load) {
-  const Progress progress = startJob(what);
-  const int generation = generation_;
-  runAsync(
-      this, &pool_, [load, progress] { return load(progress); },
-      [this, generation](const LoadedDocument& document) {
-        if (generation == generation_) documentLoaded(document);
-      });
+QString MainWindow::documentName() const {
+  return document_->name();
 }
 
-void MainWindow::documentLoaded(const LoadedDocument& document) {
-  if (!document.ok()) {
-    finishJob();
-    // Starting the load cancelled the current document's rendering; resume it.
-    if (hasDocument() && renderings_[0].isNull()) startRendering();
-    showError(document.error);
-    return;
-  }
-  document_ = document;
-  renderings_ = {};
-  preferPhotos_ = true;
-  setWindowTitle(tr("%1 — Kerf").arg(document_.name));
-  updateView();
-  startRendering();
+void MainWindow::modelChanged() {
+  const auto model = document_->model();
+  viewport_->setModel(model);
+  cutView_->setModel(model);
+  parameterPanel_->setParameters(document_->project().params);
+  renderFaces();
 }
 
-void MainWindow::startRendering() {
-  const Progress progress = startJob(kRendering);
-  const int generation = generation_;
-  runAsync(
-      this, &pool_,
-      [model = document_.model, settings = settings_, progress] {
-        return renderModelFaces(*model, settings, progress);
+// The model's faces for the faces view: a quick low-resolution preview first, then full resolution,
+// on the job runner; a newer edit supersedes the running render.
+void MainWindow::renderFaces() {
+  if (!hasDocument_) return;
+  const auto model = document_->model();
+  const RenderSettings settings = settings_;
+  if (renderJob_ && jobs_->isRunning(renderJob_)) jobs_->cancel(renderJob_);
+  renderJob_ = jobs_->start(
+      tr("Rendering faces"),
+      [model, settings](const Progress& progress, const JobRunner::Preview& preview) -> QVariant {
+        RenderSettings quick = settings;
+        quick.pxPerMm = settings.pxPerMm / 4.0f;
+        quick.samples = 1;
+        RenderedFaces coarse = renderModelFaces(*model, quick, {nullptr, progress.stop});
+        if (coarse.cancelled) throw Cancelled();
+        preview(QVariant::fromValue(coarse.faces));
+        RenderedFaces full = renderModelFaces(*model, settings, progress);
+        if (full.cancelled) throw Cancelled();
+        if (!full.error.isEmpty()) throw InputError(full.error.toStdString());
+        return QVariant::fromValue(full.faces);
       },
-      [this, generation](const RenderedFaces& faces) {
-        if (generation == generation_) facesRendered(faces);
-      });
+      [this](const QVariant& result) {
+        renderings_ = result.value<std::array<QImage, 6>>();
+        updateFacesView();
+        emit facesRendered();
+        if (documentReadyPending_) {
+          documentReadyPending_ = false;
+          emit documentReady();
+        }
+      },
+      [this](const QVariant& preview) {
+        renderings_ = preview.value<std::array<QImage, 6>>();
+        updateFacesView();
+      },
+      false);
 }
 
-void MainWindow::facesRendered(const RenderedFaces& faces) {
-  finishJob();
-  if (faces.cancelled) return;
-  if (!faces.error.isEmpty()) {
-    facesView_->setPlaceholderText(tr("The faces could not be rendered."));
-    showError(faces.error);
-    return;
+void MainWindow::updateFacesView() {
+  facesView_->setRenderings(renderings_);
+  const bool photos = document_->hasPhotos();
+  if (!displayChosenByUser_) displayMode_ = photos ? 0 : 1;
+  if (!photos && displayMode_ != 1) displayMode_ = 1;  // nothing to show or blend but the model
+  for (QAction* action : displayGroup_->actions()) {
+    action->setChecked(action->data().toInt() == displayMode_);
+    action->setEnabled(photos || action->data().toInt() == 1);
   }
-  renderings_ = faces.faces;
-  updateView();
-  emit documentReady();
+  blendSlider_->setEnabled(displayMode_ == 2);
+  facesView_->setDisplay(static_cast<FaceDisplay>(displayMode_));
+  toggleViewAction_->setEnabled(photos);
+  toggleViewAction_->setText(showingPhotos() ? tr("Show &Model Rendering") : tr("Show &Photos"));
+  const QString shortcut = toggleViewAction_->shortcut().toString(QKeySequence::NativeText);
+  static const QString titles[] = {tr("Photos"), tr("Model rendering"), tr("Model over photos")};
+  facesView_->setCaption(hasDocument_ ? titles[displayMode_] : QString(),
+                         photos ? tr("%1: photos / model").arg(shortcut) : QString());
+}
+
+void MainWindow::setFaceDisplay(int display) {
+  displayMode_ = display;
+  updateFacesView();
+}
+
+void MainWindow::toggleView() {
+  displayChosenByUser_ = true;
+  setFaceDisplay(showingPhotos() ? 1 : 0);
+}
+
+void MainWindow::applyPreset(const QString& presetId) {
+  const Preset* preset = builtInPreset(presetId);
+  if (!preset) return;
+  try {
+    document_->applyParameters(preset->applyTo(document_->project().params),
+                               tr("Apply preset %1").arg(QString::fromStdString(preset->name)));
+    logMessage("info", tr("Preset %1 applied").arg(QString::fromStdString(preset->name)));
+  } catch (const InputError& e) {
+    showError(QString::fromUtf8(e.what()));
+  }
+}
+
+void MainWindow::dropPhoto(FaceId face, const QString& path) {
+  jobs_->start(
+      tr("Loading photo"),
+      [path](const Progress&, const JobRunner::Preview&) -> QVariant {
+        const QImage image = toQImage(readImage(path.toStdString()));
+        return image;
+      },
+      [this, face, path](const QVariant& image) {
+        document_->replacePhoto(face, QFileInfo(path).absoluteFilePath(), image.value<QImage>());
+        logMessage("info",
+                   tr("Face %1: photo %2").arg(QChar(faceLetter(face))).arg(QFileInfo(path).fileName()));
+      },
+      {}, false);
 }
 
 void MainWindow::showError(const QString& message) {
   lastError_ = message;
+  logMessage("error", message);
   // open() is window-modal but returns at once: the GUI thread never blocks on the user.
   auto* box = new QMessageBox(QMessageBox::Warning, tr("Kerf"), message, QMessageBox::Ok, this);
   box->setAttribute(Qt::WA_DeleteOnClose);
   box->open();
-  emit documentFailed(message);
 }
 
-bool MainWindow::showingPhotos() const {
-  return preferPhotos_ && document_.hasPhotos();
+void MainWindow::logMessage(const QString& level, const QString& text) {
+  log_->appendMessage(level, text);
+  if (level == "error") lastError_ = text;
 }
 
-void MainWindow::toggleView() {
-  preferPhotos_ = !preferPhotos_;
-  updateView();
-}
-
-void MainWindow::updateView() {
-  const bool renderingsReady = !renderings_[0].isNull();
-  if (showingPhotos()) {
-    facesView_->setFaces(document_.photos, document_.project->block);
-  } else if (renderingsReady) {
-    facesView_->setFaces(renderings_, document_.project->block);
-  } else {
-    facesView_->clear();
-  }
-  toggleViewAction_->setEnabled(document_.hasPhotos());
-  toggleViewAction_->setText(showingPhotos() ? tr("Show &Model Rendering") : tr("Show &Photos"));
-  const QString shortcut = toggleViewAction_->shortcut().toString(QKeySequence::NativeText);
-  if (!hasDocument()) {
-    facesView_->setCaption({});
-  } else if (showingPhotos()) {
-    facesView_->setCaption(tr("Photos"), tr("%1 shows the model rendering").arg(shortcut));
-  } else {
-    facesView_->setCaption(tr("Model rendering"),
-                           document_.hasPhotos() ? tr("%1 shows the photos").arg(shortcut) : QString());
-  }
-  updateStatus();
-}
-
-void MainWindow::updateStatus() {
-  progressBar_->setVisible(busy_);
-  if (busy_) {
-    statusLabel_->setText(busyMessage_);
+void MainWindow::updateTitle() {
+  const QString name = hasDocument_ ? document_->name() : tr("No document");
+  setWindowTitle(tr("%1[*] — Kerf").arg(name));
+  setWindowModified(document_->isModified());
+  if (!hasDocument_) {
+    documentLabel_->setText(tr("No document"));
     return;
   }
-  if (!hasDocument()) {
-    statusLabel_->setText(tr("No document"));
+  const glm::vec3 size = document_->project().block.size();
+  documentLabel_->setText(
+      tr("%1 — block %2 × %3 × %4 mm%5")
+          .arg(name)
+          .arg(size.x, 0, 'g', 4)
+          .arg(size.y, 0, 'g', 4)
+          .arg(size.z, 0, 'g', 4)
+          .arg(document_->filePath().isEmpty() ? tr(" — not saved to a project file yet") : ""));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
     return;
   }
-  const glm::vec3 size = document_.project->block.size();
-  statusLabel_->setText(tr("%1 — block %2 × %3 × %4 mm — %5")
-                            .arg(document_.name)
-                            .arg(size.x, 0, 'g', 4)
-                            .arg(size.y, 0, 'g', 4)
-                            .arg(size.z, 0, 'g', 4)
-                            .arg(showingPhotos() ? tr("photos") : tr("model rendering")));
+  autosave_->discardCurrent();  // closed on purpose: nothing to recover
+  event->accept();
 }
 
 }  // namespace kerf

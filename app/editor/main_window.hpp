@@ -1,24 +1,31 @@
 #pragma once
-// The editor's main window. For now: open a document (project or sample folder) and show its six
-// faces, as photos or as the model's rendering. Loading and rendering run on a private thread pool;
-// the GUI thread only starts jobs and takes their results.
+// The editor's main window: the six faces unfolded next to the live 3D block, the parameter panel, the
+// cut plane (3D gizmo, numeric controls and a true-scale cut panel), the log and the undo history.
+// Every edit goes through the Document (undoable); every long task through the JobRunner (progress,
+// cancel, never on the GUI thread).
 #include <QMainWindow>
-#include <QThreadPool>
-#include <atomic>
-#include <functional>
-#include <memory>
-#include <stop_token>
+#include <array>
 
 #include "document_jobs.hpp"
 
 class QAction;
+class QActionGroup;
 class QLabel;
-class QProgressBar;
-class QTimer;
+class QSlider;
+class QUndoView;
 
 namespace kerf {
 
+class Autosave;
+class CutPlaneControls;
+class CutView;
+class Document;
 class FacesView;
+class JobRunner;
+class LogPanel;
+class ParameterPanel;
+class RecentFiles;
+class Viewport3D;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -27,60 +34,110 @@ class MainWindow : public QMainWindow {
   explicit MainWindow(RenderSettings settings = {}, QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  // Start loading; the current document stays until the new one has loaded.
+  // Opens a .kerf project or a sample folder (in the background); the current document stays open
+  // until the new one has loaded, and stays if loading fails.
   void openDocument(const QString& path);
   // Generates the demo into `folder` if it is not there yet, then opens it.
   void openDemo(const QString& folder, const DemoOptions& options = demoOptions());
   static DemoOptions demoOptions();  // what the editor's demo uses: 256 px faces
 
-  // State, for the status bar, the command line and tests.
-  bool isBusy() const { return busy_; }
-  bool hasDocument() const { return document_.model != nullptr; }
+  // Saves to the document's file (or asks for one); returns false if nothing was saved.
+  bool save();
+  bool saveAs(QString path = {});
+  // Offers to recover the copies an earlier session's autosave left behind (asks the user).
+  void offerRecovery();
+  // Opens an autosave copy as a modified document attached to its original file.
+  void recover(const QString& autosaveFile);
+  // While false (tests), closing a modified document discards it without asking.
+  void setAskBeforeDiscarding(bool ask) { askBeforeDiscarding_ = ask; }
+
+  bool isBusy() const;
+  bool hasDocument() const { return hasDocument_; }
   bool showingPhotos() const;
-  QString documentName() const { return document_.name; }
+  QString documentName() const;
   QString lastError() const { return lastError_; }
+
+  Document* document() const { return document_; }
   FacesView* facesView() const { return facesView_; }
+  Viewport3D* viewport() const { return viewport_; }
+  CutView* cutView() const { return cutView_; }
+  ParameterPanel* parameterPanel() const { return parameterPanel_; }
+  CutPlaneControls* cutControls() const { return cutControls_; }
+  JobRunner* jobs() const { return jobs_; }
+  LogPanel* log() const { return log_; }
+  Autosave* autosave() const { return autosave_; }
   QAction* toggleViewAction() const { return toggleViewAction_; }
+  QAction* undoAction() const { return undoAction_; }
+  QAction* redoAction() const { return redoAction_; }
 
  signals:
-  // The document has loaded and its faces have rendered.
+  // The document has loaded and its faces have rendered (at full resolution).
   void documentReady();
-  // Loading or rendering failed; the message is also shown in a (non-blocking) message box.
+  // Loading failed; the message is also shown in a (non-blocking) message box and the log.
   void documentFailed(const QString& message);
+  // The model's faces were rendered again after an edit (full resolution).
+  void facesRendered();
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
 
  private:
+  void createViews();
+  void createDocks();
   void createMenus();
+  void connectDocument();
+  void restoreLayout();
+
   void chooseDocument();
   void startLoad(const QString& what, std::function<LoadedDocument(const Progress&)> load);
-  void documentLoaded(const LoadedDocument& document);
-  void startRendering();
-  void facesRendered(const RenderedFaces& faces);
-  void showError(const QString& message);
+  void documentLoaded(const LoadedDocument& loaded);
+  bool maybeSave();  // false: the user cancelled
+
+  void modelChanged();
+  void renderFaces();
+  void updateFacesView();
+  void setFaceDisplay(int display);
   void toggleView();
-  void updateView();
-  void updateStatus();
-  Progress startJob(const QString& message);  // cancels the running job, returns the new job's Progress
-  void finishJob();
+  void dropPhoto(FaceId face, const QString& path);
+  void applyPreset(const QString& presetId);
+
+  void exportFaces();
+  void exportCut();
+  void exportVolume();
+
+  void showError(const QString& message);
+  void logMessage(const QString& level, const QString& text);
+  void updateTitle();
 
   RenderSettings settings_;
-  LoadedDocument document_;
-  std::array<QImage, 6> renderings_;
-  bool preferPhotos_ = true;
-  bool busy_ = false;
-  QString busyMessage_;
+  Document* document_ = nullptr;
+  JobRunner* jobs_ = nullptr;
+  Autosave* autosave_ = nullptr;
+  RecentFiles* recent_ = nullptr;
+  bool hasDocument_ = false;
+  bool documentReadyPending_ = false;
+  bool askBeforeDiscarding_ = true;
   QString lastError_;
-
-  // Jobs: each gets a generation number; results of superseded jobs are dropped.
-  int generation_ = 0;
-  std::stop_source stop_;
-  std::shared_ptr<std::atomic<double>> progress_;
-  QThreadPool pool_;
+  std::array<QImage, 6> renderings_;
+  int displayMode_ = 0;  // FaceDisplay as int
+  bool displayChosenByUser_ = false;
+  int renderJob_ = 0;
 
   FacesView* facesView_ = nullptr;
+  Viewport3D* viewport_ = nullptr;
+  CutView* cutView_ = nullptr;
+  ParameterPanel* parameterPanel_ = nullptr;
+  CutPlaneControls* cutControls_ = nullptr;
+  LogPanel* log_ = nullptr;
+  QUndoView* history_ = nullptr;
+  QSlider* blendSlider_ = nullptr;
+  QLabel* cursorLabel_ = nullptr;
+  QLabel* documentLabel_ = nullptr;
+  QActionGroup* displayGroup_ = nullptr;
   QAction* toggleViewAction_ = nullptr;
-  QLabel* statusLabel_ = nullptr;
-  QProgressBar* progressBar_ = nullptr;
-  QTimer* progressTimer_ = nullptr;
+  QAction* undoAction_ = nullptr;
+  QAction* redoAction_ = nullptr;
+  QAction* showPhotosOn3dAction_ = nullptr;
 };
 
 }  // namespace kerf

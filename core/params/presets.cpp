@@ -14,9 +14,10 @@ using nlohmann::json;
 namespace {
 
 constexpr std::string_view kKeptIds[] = {
-    "growth.pith_origin", "growth.pith_tilt",   "growth.pith_azimuth", "growth.ring_offset",
-    "growth.eccentricity", "growth.eccentricity_direction", "faces.tint_a", "faces.tint_b",
-    "faces.tint_c",        "faces.tint_d",      "faces.tint_e",        "faces.tint_f",
+    "growth.pith_origin", "growth.pith_tilt",    "growth.pith_azimuth",
+    "growth.ring_offset", "growth.eccentricity", "growth.eccentricity_direction",
+    "faces.tint_a",       "faces.tint_b",        "faces.tint_c",
+    "faces.tint_d",       "faces.tint_e",        "faces.tint_f",
     "model.seed"};
 
 bool isKept(std::string_view id) {
@@ -105,7 +106,9 @@ Preset presetFromJson(const json& in) {
 }
 
 json presetToJson(const Preset& preset) {
-  json out = {{"format", kPresetFormatName}, {"version", kPresetFormatVersion}, {"id", preset.id},
+  json out = {{"format", kPresetFormatName},
+              {"version", kPresetFormatVersion},
+              {"id", preset.id},
               {"name", preset.name}};
   if (!preset.latin.empty()) out["latin"] = preset.latin;
   if (!preset.mokumeCode.empty()) out["mokume_code"] = preset.mokumeCode;

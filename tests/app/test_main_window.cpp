@@ -8,16 +8,48 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <QCheckBox>
+#include <QSlider>
+#include <QUndoStack>
+
+#include "cut_gizmo.hpp"
+#include "cut_plane_controls.hpp"
+#include "cut_view.hpp"
 #include "demo/demo_block.hpp"
+#include "document.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
+#include "parameter_panel.hpp"
 #include "qt_image.hpp"
+#include "viewport3d.hpp"
 
 using namespace kerf;
 
 namespace {
 constexpr int kTimeoutMs = 60000;
+
+QPoint toPoint(glm::vec3 px) {
+  return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
 }
+
+// Share of pixels that differ noticeably between two pictures of the same size.
+double changedShare(const QImage& a, const QImage& b) {
+  if (a.size() != b.size() || a.isNull()) return 1.0;
+  const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
+  int changed = 0;
+  for (int row = 0; row < x.height(); ++row)
+    for (int col = 0; col < x.width(); ++col) {
+      const QRgb p = x.pixel(col, row), q = y.pixel(col, row);
+      changed +=
+          std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q)) > 24;
+    }
+  return static_cast<double>(changed) / (x.width() * x.height());
+}
+
+QString artifact(const QString& name) {
+  return QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/") + name + ".png";
+}
+}  // namespace
 
 class TestMainWindow : public QObject {
   Q_OBJECT
@@ -31,6 +63,10 @@ class TestMainWindow : public QObject {
   void malformedProjectShowsError();
   void missingFileShowsError();
   void generatesMissingDemo();
+  void sliderChangesTheViews();
+  void draggingTheCutPlaneChangesTheCutPanel();
+  void undoRestores();
+  void saveAndReopenRoundTrip();
   void savesScreenshot();
   void cleanupTestCase() { window_.reset(); }
 
@@ -49,6 +85,7 @@ void TestMainWindow::initTestCase() {
   options.samples = 1;
   project_ = QString::fromStdString(writeDemo(dir_.filePath("demo").toStdString(), options).project.string());
   window_ = std::make_unique<MainWindow>(RenderSettings{1.6f, 1});  // 64 px faces, like the photos
+  window_->setAskBeforeDiscarding(false);
   window_->show();
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
 }
@@ -70,7 +107,8 @@ void TestMainWindow::opensDemoWithSixFaces() {
   QVERIFY(window_->isBusy());  // the work runs in the background
   QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
   QVERIFY(!window_->isBusy());
-  QCOMPARE(window_->windowTitle(), QStringLiteral("demo — Kerf"));
+  QCOMPARE(window_->windowTitle().remove(QStringLiteral("[*]")), QStringLiteral("demo — Kerf"));
+  QVERIFY(!window_->isWindowModified());
 
   const FacesView* view = window_->facesView();
   QVERIFY(window_->showingPhotos());
@@ -171,6 +209,120 @@ void TestMainWindow::generatesMissingDemo() {
   QCOMPARE(window.facesView()->faces()[0].width(), 32);
 }
 
+void TestMainWindow::sliderChangesTheViews() {
+  Viewport3D* viewport = window_->viewport();
+  QTRY_VERIFY_WITH_TIMEOUT(viewport->ready(), kTimeoutMs);
+  viewport->refineNow();
+  const QImage block = viewport->grabFramebuffer();
+  window_->toggleViewAction()->trigger();  // show the model's faces
+  QVERIFY(!window_->showingPhotos());
+  const QImage faceA = window_->facesView()->faces()[0];
+
+  // The "Average ring width" slider, moved with the keyboard as a user would.
+  const int row = static_cast<int>(*parameterIndex("growth.ring_width"));
+  QSlider* slider = window_->parameterPanel()->row(row)->findChild<QSlider*>();
+  QVERIFY(slider);
+  const float before = window_->document()->project().params.ringWidth;
+  QSignalSpy rendered(window_.get(), &MainWindow::facesRendered);
+  slider->setFocus();
+  QTest::keyClick(slider, Qt::Key_PageUp);
+  QVERIFY(window_->document()->project().params.ringWidth > before);
+  QCOMPARE(window_->document()->undoStack()->count(), 1);
+  QVERIFY(window_->isWindowModified());
+
+  QTRY_VERIFY_WITH_TIMEOUT(rendered.count() >= 1, kTimeoutMs);
+  QVERIFY2(changedShare(window_->facesView()->faces()[0], faceA) > 0.05, "faces did not follow the slider");
+  viewport->refineNow();
+  const QImage blockAfter = viewport->grabFramebuffer();
+  QVERIFY2(changedShare(blockAfter, block) > 0.02, "the 3D view did not follow the slider");
+  QVERIFY(blockAfter.save(artifact("main_window_slider_3d")));
+  window_->toggleViewAction()->trigger();
+}
+
+void TestMainWindow::draggingTheCutPlaneChangesTheCutPanel() {
+  // Show the cut with the controls' checkbox, as a user would.
+  QCheckBox* show = nullptr;
+  for (QCheckBox* box : window_->cutControls()->findChildren<QCheckBox*>())
+    if (box->text().remove('&') == QStringLiteral("Show cut")) show = box;
+  QVERIFY(show);
+  QVERIFY(show->isVisible());
+  QTest::mouseClick(show, Qt::LeftButton, {}, QPoint(8, show->height() / 2));  // on the box itself
+  QTRY_VERIFY(window_->document()->cutEnabled());
+  window_->document()->editCutPlane({5.0f, 0.0f, 0.0f}, true);  // facing +x: the default view sees it
+  const int steps = window_->document()->undoStack()->count();
+  CutView* cutView = window_->cutView();
+  const QImage cutBefore = cutView->grabFramebuffer();
+
+  Viewport3D* viewport = window_->viewport();
+  viewport->grabFramebuffer();
+  const CutGizmo& gizmo = viewport->gizmo();
+  const OrbitCamera& camera = viewport->camera();
+  glm::vec3 grab(0.0f);
+  bool found = false;
+  for (const glm::vec3& corner : gizmo.polygon())
+    for (float t : {0.8f, 0.65f, 0.5f}) {
+      const glm::vec3 p = gizmo.pivot() + t * (corner - gizmo.pivot());
+      const glm::vec3 px = camera.project(p);
+      if (!found && gizmo.pick(camera, {px.x, px.y}) == CutGizmo::Handle::Surface) grab = p, found = true;
+    }
+  QVERIFY2(found, "no free spot on the cut surface");
+  const glm::vec3 p0 = camera.project(grab),
+                  p1 = camera.project(grab - glm::vec3(1, 0, 0));  // into the block
+  const glm::vec2 dir = glm::normalize(glm::vec2(p1) - glm::vec2(p0));
+  const QPoint start = toPoint(p0);
+  QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, start);
+  for (int i = 1; i <= 6; ++i)
+    QTest::mouseMove(viewport, start + QPoint(std::lround(dir.x * 6 * i), std::lround(dir.y * 6 * i)));
+  QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier,
+                      start + QPoint(std::lround(dir.x * 36), std::lround(dir.y * 36)));
+
+  const CutPlaneSetting moved = window_->document()->cutPlane();
+  QVERIFY2(moved.offsetMm < 4.0f, qPrintable(QString("offset %1").arg(moved.offsetMm)));
+  QCOMPARE(window_->document()->undoStack()->count(), steps + 1);  // the whole drag is one step
+  QCOMPARE(window_->cutControls()->setting(), moved);
+  QTRY_VERIFY_WITH_TIMEOUT(changedShare(cutView->grabFramebuffer(), cutBefore) > 0.02, 5000);
+  QVERIFY(cutView->grabFramebuffer().save(artifact("main_window_cut_panel")));
+}
+
+void TestMainWindow::undoRestores() {
+  QUndoStack* undo = window_->document()->undoStack();
+  const CutPlaneSetting placed{5.0f, 0.0f, 0.0f};
+  window_->undoAction()->trigger();  // the drag
+  QCOMPARE(window_->document()->cutPlane(), placed);
+  QCOMPARE(window_->cutControls()->setting(), placed);
+  QCOMPARE(window_->viewport()->cutPlane(), placed);
+  window_->undoAction()->trigger();  // placing the plane
+  window_->undoAction()->trigger();  // the ring-width slider
+  QCOMPARE(undo->index(), 0);
+  QCOMPARE(window_->document()->project().params, demoProject().params);
+  QCOMPARE(window_->parameterPanel()->parameters(), demoProject().params);
+  QVERIFY(!window_->isWindowModified() ||
+          window_->document()->cutEnabled());  // showing the cut is a view change
+  window_->redoAction()->trigger();
+  QVERIFY(window_->document()->project().params.ringWidth > demoProject().params.ringWidth);
+}
+
+void TestMainWindow::saveAndReopenRoundTrip() {
+  window_->document()->editCutPlane({-3.0f, 30.0f, 15.0f}, true);
+  const Project saved = window_->document()->project();
+  const QString path = dir_.filePath("saved/block.kerf");
+  QVERIFY(QDir().mkpath(dir_.filePath("saved")));
+  QVERIFY(window_->saveAs(path));
+  QVERIFY(!window_->isWindowModified());
+  QCOMPARE(window_->documentName(), QStringLiteral("block"));
+
+  QSignalSpy ready(window_.get(), &MainWindow::documentReady);
+  window_->openDocument(path);
+  QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+  const Project& reopened = window_->document()->project();
+  QCOMPARE(reopened.params, saved.params);
+  QCOMPARE(window_->document()->cutPlane(), (CutPlaneSetting{-3.0f, 30.0f, 15.0f}));
+  QCOMPARE(window_->document()->cutEnabled(), saved.cutEnabled);
+  for (int i = 0; i < 6; ++i) QCOMPARE(reopened.facePhotos[i], saved.facePhotos[i]);
+  QCOMPARE(window_->document()->filePath(), QFileInfo(path).absoluteFilePath());
+  QCOMPARE(window_->document()->undoStack()->count(), 0);
+}
+
 void TestMainWindow::savesScreenshot() {
   const QString path = QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/main_window.png");
   QVERIFY(QDir().mkpath(QFileInfo(path).absolutePath()));
@@ -178,5 +330,14 @@ void TestMainWindow::savesScreenshot() {
   QVERIFY(QFileInfo(path).size() > 0);
 }
 
-QTEST_MAIN(TestMainWindow)
+int main(int argc, char** argv) {
+  QSurfaceFormat format;  // as the editor's main()
+  format.setVersion(3, 3);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  QSurfaceFormat::setDefaultFormat(format);
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName(QStringLiteral("KerfTests"));
+  TestMainWindow test;
+  return QTest::qExec(&test, argc, argv);
+}
 #include "test_main_window.moc"

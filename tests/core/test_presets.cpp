@@ -52,8 +52,8 @@ json validPreset(const std::string& id) {
 
 TEST(Presets, EveryMokumeTable1SpeciesHasOnePreset) {
   // Mokume Table 1 (mokume-dataset-inverse-modeling-2025): 17 species codes.
-  const std::set<std::string> table1 = {"B",  "BW", "CH", "CN", "H", "IC", "K",  "KR", "MP",
-                                        "MZ", "N",  "NR", "P",  "RO", "S", "SG", "TC"};
+  const std::set<std::string> table1 = {"B",  "BW", "CH", "CN", "H",  "IC", "K",  "KR", "MP",
+                                        "MZ", "N",  "NR", "P",  "RO", "S",  "SG", "TC"};
   const auto presets = loadPresets(kPresetDir);
   std::set<std::string> codes, ids;
   for (const Preset& p : presets) {
