@@ -109,7 +109,11 @@ glm::vec3 CutGizmo::pivot() const {
 }
 
 float CutGizmo::ringRadius() const {
-  return 0.5f * glm::length(block_.halfSize());
+  // From the block's two smaller sides (a cross-cut's size on a long board), so the rings stay close
+  // around the cut surface and do not change while the plane moves.
+  glm::vec3 h = block_.halfSize();
+  std::sort(&h[0], &h[0] + 3);
+  return 0.6f * std::sqrt(h[0] * h[0] + h[1] * h[1]);
 }
 
 float CutGizmo::maxOffset(glm::vec3 n) const {

@@ -11,6 +11,7 @@
 
 #include "main_window.hpp"
 #include "viewport3d.hpp"
+#include "window_grab.hpp"
 
 namespace {
 
@@ -27,7 +28,7 @@ void screenshotWhenReady(kerf::MainWindow& window, const QString& file) {
     // Give the GL views a few event-loop turns to draw their full-resolution frames.
     QTimer::singleShot(400, &window, [&window, file] {
       QDir().mkpath(QFileInfo(file).absolutePath());
-      if (window.grab().save(file)) {
+      if (kerf::grabWindowWithGl(&window).save(file)) {
         QCoreApplication::exit(0);
       } else {
         fail(QStringLiteral("cannot write the screenshot %1").arg(file));
@@ -71,6 +72,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // Screenshots show the default layout, whatever the user last arranged.
+  if (parser.isSet(screenshot)) qputenv("KERF_DEFAULT_LAYOUT", "1");
   kerf::MainWindow window;
   if (parser.isSet(screenshot)) screenshotWhenReady(window, parser.value(screenshot));
   window.show();

@@ -14,6 +14,7 @@
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
 #include <QVBoxLayout>
@@ -197,15 +198,27 @@ void MainWindow::createDocks() {
   tabifyDockWidget(cut, logDock);
   tabifyDockWidget(logDock, historyDock);
   cut->raise();
-  // The faces and the 3D block get most of the window; the panels start compact.
-  resizeDocks({cut}, {300}, Qt::Vertical);
-  resizeDocks({parameters}, {430}, Qt::Horizontal);
 }
 
 void MainWindow::restoreLayout() {
   QSettings settings;
+  const QByteArray state = settings.value("window/state").toByteArray();
+  if (state.isEmpty() || qEnvironmentVariableIsSet("KERF_DEFAULT_LAYOUT")) {
+    useDefaultLayout();
+    return;
+  }
   restoreGeometry(settings.value("window/geometry").toByteArray());
-  restoreState(settings.value("window/state").toByteArray());
+  restoreState(state);
+}
+
+void MainWindow::useDefaultLayout() {
+  // Once the window has its size: the faces and the 3D block get most of it, the panels start compact.
+  QTimer::singleShot(0, this, [this] {
+    auto* cut = findChild<QDockWidget*>("cutDock");
+    auto* parameters = findChild<QDockWidget*>("parametersDock");
+    resizeDocks({cut}, {std::max(240, height() * 3 / 8)}, Qt::Vertical);
+    resizeDocks({parameters}, {460}, Qt::Horizontal);
+  });
 }
 
 void MainWindow::connectDocument() {

@@ -87,6 +87,7 @@ class MainWindow : public QMainWindow {
   void createMenus();
   void connectDocument();
   void restoreLayout();
+  void useDefaultLayout();
 
   void chooseDocument();
   void startLoad(const QString& what, std::function<LoadedDocument(const Progress&)> load);

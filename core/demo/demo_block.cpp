@@ -21,6 +21,9 @@ Project demoProject(std::uint32_t seed) {
   // block behind face F; the demo uses them as they are, so "defaults" and "demo" agree. The growth
   // rates stay synthesised from the parameters (so the editor's growth sliders act on the demo);
   // truth.json records them explicitly.
+  // Open with a slanted cut shown, so the first view already looks inside the block.
+  project.cutPlane = CutPlaneSetting{4.0f, 35.0f, 20.0f};
+  project.cutEnabled = true;
   return project;
 }
 

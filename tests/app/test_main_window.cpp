@@ -12,6 +12,7 @@
 #include <QSlider>
 #include <QUndoStack>
 
+#include "autosave.hpp"
 #include "cut_gizmo.hpp"
 #include "cut_plane_controls.hpp"
 #include "cut_view.hpp"
@@ -22,6 +23,7 @@
 #include "parameter_panel.hpp"
 #include "qt_image.hpp"
 #include "viewport3d.hpp"
+#include "window_grab.hpp"
 
 using namespace kerf;
 
@@ -67,6 +69,7 @@ class TestMainWindow : public QObject {
   void draggingTheCutPlaneChangesTheCutPanel();
   void undoRestores();
   void saveAndReopenRoundTrip();
+  void recoversAutosavedWorkAfterACrash();
   void savesScreenshot();
   void cleanupTestCase() { window_.reset(); }
 
@@ -80,6 +83,7 @@ class TestMainWindow : public QObject {
 
 void TestMainWindow::initTestCase() {
   QVERIFY(dir_.isValid());
+  qputenv("KERF_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());  // never the user's own folder
   DemoOptions options;
   options.facePixels = 64;
   options.samples = 1;
@@ -323,10 +327,38 @@ void TestMainWindow::saveAndReopenRoundTrip() {
   QCOMPARE(window_->document()->undoStack()->count(), 0);
 }
 
+void TestMainWindow::recoversAutosavedWorkAfterACrash() {
+  const std::size_t ring = *parameterIndex("growth.ring_width");
+  QString leftover;
+  {
+    MainWindow crashed(RenderSettings{0.8f, 1});
+    QSignalSpy ready(&crashed, &MainWindow::documentReady);
+    crashed.openDocument(project_);
+    QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+    crashed.document()->editParameter(ring, {5.5f, 0, 0}, true);
+    crashed.autosave()->saveNow();
+    leftover = crashed.autosave()->currentFile();
+    QVERIFY(QFile::exists(leftover));
+    // Destroyed without closing, as in a crash: the copy stays.
+  }
+  QVERIFY(QFile::exists(leftover));
+  MainWindow next(RenderSettings{0.8f, 1});
+  next.setAskBeforeDiscarding(false);
+  QVERIFY(next.autosave()->leftovers().contains(QFileInfo(leftover).absoluteFilePath()));
+  QSignalSpy ready(&next, &MainWindow::documentReady);
+  next.recover(leftover);
+  QCOMPARE(next.document()->project().params.ringWidth, 5.5f);
+  QVERIFY(next.document()->isModified());
+  QCOMPARE(next.document()->filePath(), QFileInfo(project_).absoluteFilePath());  // Save goes back there
+  QVERIFY(next.document()->hasPhotos());
+  QVERIFY(!QFile::exists(leftover));
+  QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+}
+
 void TestMainWindow::savesScreenshot() {
   const QString path = QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/main_window.png");
   QVERIFY(QDir().mkpath(QFileInfo(path).absolutePath()));
-  QVERIFY(window_->grab().save(path));
+  QVERIFY(grabWindowWithGl(window_.get()).save(path));
   QVERIFY(QFileInfo(path).size() > 0);
 }
 
