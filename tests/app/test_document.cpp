@@ -94,7 +94,7 @@ class DocumentTest : public QObject {
     QCOMPARE(document_.cutPlane(), (CutPlaneSetting{3, 15, 0}));
     QCOMPARE(changed.count(), 3);
     document_.undoStack()->undo();
-    QCOMPARE(document_.cutPlane(), CutPlaneSetting{});
+    QCOMPARE(document_.cutPlane(), *demoProject().cutPlane);
   }
 
   void photoReplacementIsUndoable() {

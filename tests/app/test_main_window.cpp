@@ -250,8 +250,14 @@ void TestMainWindow::draggingTheCutPlaneChangesTheCutPanel() {
     if (box->text().remove('&') == QStringLiteral("Show cut")) show = box;
   QVERIFY(show);
   QVERIFY(show->isVisible());
+  // The demo opens with the cut shown: hide it, then show it again.
+  QVERIFY(window_->document()->cutEnabled());
   QTest::mouseClick(show, Qt::LeftButton, {}, QPoint(8, show->height() / 2));  // on the box itself
+  QTRY_VERIFY(!window_->document()->cutEnabled());
+  QVERIFY(!window_->viewport()->cutEnabled());
+  QTest::mouseClick(show, Qt::LeftButton, {}, QPoint(8, show->height() / 2));
   QTRY_VERIFY(window_->document()->cutEnabled());
+  QVERIFY(window_->viewport()->cutEnabled());
   window_->document()->editCutPlane({5.0f, 0.0f, 0.0f}, true);  // facing +x: the default view sees it
   const int steps = window_->document()->undoStack()->count();
   CutView* cutView = window_->cutView();
