@@ -1,8 +1,10 @@
 #include "viewport3d.hpp"
 
+#include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLFramebufferObject>
+#include <QOpenGLPaintDevice>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLTexture>
 #include <QPainter>
@@ -67,7 +69,7 @@ Viewport3D::~Viewport3D() {
 }
 
 void Viewport3D::releaseGl() {
-  if (!glReady_) return;
+  if (!glFunctions_) return;
   makeCurrent();
   reducedFbo_.reset();
   fullFbo_.reset();
@@ -80,6 +82,7 @@ void Viewport3D::releaseGl() {
   glDeleteBuffers(1, &vertexBuffer_);
   glDeleteBuffers(1, &capBuffer_);
   glReady_ = false;
+  glFunctions_ = false;
   doneCurrent();
 }
 
@@ -223,12 +226,18 @@ void Viewport3D::noteCost(double ms, double pixels) {
 // --- OpenGL ------------------------------------------------------------------------------------------
 
 void Viewport3D::initializeGL() {
-  initializeOpenGLFunctions();
+  if (!initializeOpenGLFunctions()) {
+    qWarning("Viewport3D: OpenGL 3.3 core is not available (got %d.%d)", context()->format().majorVersion(),
+             context()->format().minorVersion());
+    return;
+  }
+  glFunctions_ = true;
   rendererName_ = QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   try {
     blockProgram_ = std::make_unique<WoodProgram>("block.vert", "block.frag");
   } catch (const std::exception& e) {
     qWarning("Viewport3D: %s", e.what());
+    failure_ = tr("The 3D view's shaders did not build (see the log).");
     return;
   }
   backgroundProgram_ = std::make_unique<QOpenGLShaderProgram>();
@@ -239,6 +248,7 @@ void Viewport3D::initializeGL() {
           "#version 330 core\n" + WoodProgram::shaderFile("block_background.frag")) ||
       !backgroundProgram_->link()) {
     qWarning("Viewport3D: background shader: %s", qPrintable(backgroundProgram_->log()));
+    failure_ = tr("The 3D view's shaders did not build (see the log).");
     return;
   }
   glGenVertexArrays(1, &vertexArray_);
@@ -316,7 +326,18 @@ void Viewport3D::paintGL() {
   QElapsedTimer clock;
   clock.start();
   lastRenderedScene_ = false;
-  if (!glReady_) return;
+  if (!glReady_) {
+    if (glFunctions_) {  // say why instead of showing an undefined framebuffer
+      glClearColor(0.2f, 0.21f, 0.23f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      QOpenGLPaintDevice device(size() * devicePixelRatioF());
+      device.setDevicePixelRatio(devicePixelRatioF());
+      QPainter painter(&device);
+      painter.setPen(QColor(220, 220, 220));
+      painter.drawText(rect(), Qt::AlignCenter, failure_);
+    }
+    return;
+  }
   const qreal dpr = devicePixelRatioF();
   const QSize full(std::max(1, qRound(width() * dpr)), std::max(1, qRound(height() * dpr)));
 
@@ -399,7 +420,11 @@ void Viewport3D::paintGL() {
   glBindFramebuffer(GL_FRAMEBUFFER, screen);
   glViewport(0, 0, full.width(), full.height());
   {
-    QPainter painter(this);
+    // A paint device on the bound framebuffer rather than `this`: QWidget::grab()/render() redirect
+    // painting on the widget, which would lose the overlay in screenshots of the whole window.
+    QOpenGLPaintDevice device(full);
+    device.setDevicePixelRatio(dpr);
+    QPainter painter(&device);
     drawOverlay(painter);
   }
   if (finishFrames_) glFinish();
@@ -683,6 +708,7 @@ void Viewport3D::mousePressEvent(QMouseEvent* event) {
   } else if (event->button() == Qt::RightButton || event->button() == Qt::MiddleButton) {
     dragMode_ = DragMode::Pan;
   }
+  dragButton_ = event->button();
   updateCursor();
   update();
   event->accept();
@@ -724,6 +750,7 @@ void Viewport3D::mouseMoveEvent(QMouseEvent* event) {
 
 void Viewport3D::mouseReleaseEvent(QMouseEvent* event) {
   lastMouse_ = event->position();
+  if (dragMode_ != DragMode::None && event->button() != dragButton_) return;  // another button
   if (dragMode_ == DragMode::Cut) {
     const CutPlaneSetting start = gizmo_.dragStartSetting();
     gizmo_.endDrag();

@@ -25,14 +25,12 @@
 // measured cost of past frames (1 = none on a fast GPU, up to 4) unless fixed with
 // setReducedResolutionDivisor(). Discrete changes (toggles, keys, setCamera) draw full resolution at
 // once. Handles and hover highlights are drawn over the cached picture without re-rendering the wood.
-#include <QElapsedTimer>
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QTimer>
 #include <array>
 #include <memory>
-#include <optional>
 
 #include "cut_gizmo.hpp"
 #include "geometry/cut_plane.hpp"
@@ -167,17 +165,19 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // Interaction.
   DragMode dragMode_ = DragMode::None;
   QPointF lastMouse_;
+  Qt::MouseButton dragButton_ = Qt::NoButton;
   bool emittedDuringDrag_ = false;
   CutGizmo::Handle hover_ = CutGizmo::Handle::None;
 
   // Rendering.
   bool glReady_ = false;
+  bool glFunctions_ = false;
+  QString failure_;
   QString rendererName_;
   std::unique_ptr<WoodProgram> blockProgram_;
   std::unique_ptr<QOpenGLShaderProgram> backgroundProgram_;
   unsigned growthTexture_ = 0;  // the WoodProgram's growth table (re-bound every frame)
   unsigned vertexArray_ = 0, vertexBuffer_ = 0, capArray_ = 0, capBuffer_ = 0, emptyArray_ = 0;
-  int capVertices_ = 0;
   std::array<std::unique_ptr<QOpenGLTexture>, 6> photoTextures_;
   // The wood picture: reduced (while interacting) and full resolution, the latter drawn in horizontal
   // bands over several frames when refining after an interaction, so input is handled between bands.

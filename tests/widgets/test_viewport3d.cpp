@@ -2,6 +2,8 @@
 // OpenGL context (Mesa under xvfb-run): the picture, the cut, dragging the cut plane, snapping, the
 // reduced-resolution frames while interacting, the face photos, and frame times (printed).
 #include <QApplication>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QtTest>
 #include <algorithm>
@@ -615,6 +617,25 @@ class Viewport3DTest : public QObject {
     QTRY_VERIFY(!view_->fullyRefined() && view_->lastFrameRenderedScene() && view_->lastFrameDivisor() == 3);
     QTRY_VERIFY_WITH_TIMEOUT(view_->fullyRefined(), 10000);
     view_->setReducedResolutionDivisor(1);
+  }
+
+  // Inside a window with other widgets, QWidget::grab() (the editor's --screenshot) shows the wood.
+  void embeddedInWindow() {
+    QWidget window;
+    auto* layout = new QHBoxLayout(&window);
+    auto* label = new QLabel("parameters");
+    auto* view = new Viewport3D;
+    layout->addWidget(label);
+    layout->addWidget(view, 1);
+    view->setModel(model_);
+    window.resize(700, 450);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_VERIFY(view->ready());
+    const QImage shot = window.grab().toImage();
+    QVERIFY(shot.save(artifact("embedded")));
+    const QPoint centre = view->geometry().center();
+    QVERIFY(looksLikeWood(rgbAt(shot, centre.x(), centre.y())));
   }
 
   // Frame times at 1280 x 800 (printed for docs/performance.md).
