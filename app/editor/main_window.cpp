@@ -264,8 +264,9 @@ void MainWindow::modelChanged() {
   renderFaces();
 }
 
-// The model's faces for the faces view: a quick low-resolution preview first, then full resolution,
-// on the job runner; a newer edit supersedes the running render.
+// The model's faces for the faces view, progressively: a quarter-resolution preview within a few
+// milliseconds, then full resolution with one sample per pixel, then the supersampled final picture.
+// A newer edit cancels the running render, so a slider drag keeps showing fresh previews.
 void MainWindow::renderFaces() {
   if (!hasDocument_) return;
   const auto model = document_->model();
@@ -274,16 +275,16 @@ void MainWindow::renderFaces() {
   renderJob_ = jobs_->start(
       tr("Rendering faces"),
       [model, settings](const Progress& progress, const JobRunner::Preview& preview) -> QVariant {
-        RenderSettings quick = settings;
-        quick.pxPerMm = settings.pxPerMm / 4.0f;
-        quick.samples = 1;
-        RenderedFaces coarse = renderModelFaces(*model, quick, {nullptr, progress.stop});
-        if (coarse.cancelled) throw Cancelled();
-        preview(QVariant::fromValue(coarse.faces));
-        RenderedFaces full = renderModelFaces(*model, settings, progress);
-        if (full.cancelled) throw Cancelled();
-        if (!full.error.isEmpty()) throw InputError(full.error.toStdString());
-        return QVariant::fromValue(full.faces);
+        const auto stage = [&](float pxPerMm, int samples, const Progress& stageProgress) {
+          RenderedFaces faces = renderModelFaces(*model, RenderSettings{pxPerMm, samples}, stageProgress);
+          if (faces.cancelled) throw Cancelled();
+          if (!faces.error.isEmpty()) throw InputError(faces.error.toStdString());
+          return faces.faces;
+        };
+        const Progress quiet{nullptr, progress.stop};
+        preview(QVariant::fromValue(stage(settings.pxPerMm / 4.0f, 1, quiet)));
+        if (settings.samples > 1) preview(QVariant::fromValue(stage(settings.pxPerMm, 1, quiet)));
+        return QVariant::fromValue(stage(settings.pxPerMm, settings.samples, progress));
       },
       [this](const QVariant& result) {
         renderings_ = result.value<std::array<QImage, 6>>();
@@ -297,6 +298,7 @@ void MainWindow::renderFaces() {
       [this](const QVariant& preview) {
         renderings_ = preview.value<std::array<QImage, 6>>();
         updateFacesView();
+        emit facesPreviewed();
       },
       false);
 }

@@ -77,6 +77,8 @@ class MainWindow : public QMainWindow {
   void documentFailed(const QString& message);
   // The model's faces were rendered again after an edit (full resolution).
   void facesRendered();
+  // A quicker, coarser rendering of the faces is on screen (before facesRendered).
+  void facesPreviewed();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
