@@ -14,6 +14,7 @@
 
 #include "demo/demo_block.hpp"
 #include "document.hpp"
+#include "gl/surface_format.hpp"
 #include "main_window.hpp"
 #include "viewport3d.hpp"
 
@@ -29,10 +30,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  QSurfaceFormat::setDefaultFormat(format);
+  kerf::useKerfSurfaceFormat();  // as the editor does
   QApplication app(argc, argv);
   QApplication::setOrganizationName("KerfBench");
   QTemporaryDir dir;

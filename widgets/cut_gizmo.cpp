@@ -34,44 +34,7 @@ float segmentDistance2(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
 }  // namespace
 
 std::vector<glm::vec3> cutPolygon(const Block& block, const CutPlane& plane) {
-  const glm::vec3 h = block.halfSize();
-  const glm::vec3 n = plane.normal();
-  std::vector<glm::vec3> points;
-  auto add = [&](glm::vec3 p) {
-    for (const glm::vec3& q : points)
-      if (glm::length(q - p) < 1e-4f * (1.0f + glm::length(h))) return;
-    points.push_back(p);
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-    for (int corner = 0; corner < 4; ++corner) {
-      glm::vec3 start(0.0f);
-      start[a1] = (corner & 1) ? h[a1] : -h[a1];
-      start[a2] = (corner & 2) ? h[a2] : -h[a2];
-      start[axis] = -h[axis];
-      glm::vec3 dir(0.0f);
-      dir[axis] = 2.0f * h[axis];
-      const float denom = glm::dot(n, dir);
-      const float num = glm::dot(n, plane.point() - start);
-      if (std::abs(denom) < 1e-9f) {
-        if (std::abs(num) <= 1e-5f) add(start), add(start + dir);  // the edge lies in the plane
-        continue;
-      }
-      const float t = num / denom;
-      if (t < -1e-6f || t > 1.0f + 1e-6f) continue;
-      add(start + std::clamp(t, 0.0f, 1.0f) * dir);
-    }
-  }
-  if (points.size() < 3) return {};
-  glm::vec3 centre(0.0f);
-  for (const glm::vec3& p : points) centre += p;
-  centre /= static_cast<float>(points.size());
-  const glm::vec3 right = plane.right(), up = plane.up();  // right x up = normal: CCW seen from +n
-  std::sort(points.begin(), points.end(), [&](const glm::vec3& a, const glm::vec3& b) {
-    return std::atan2(glm::dot(a - centre, up), glm::dot(a - centre, right)) <
-           std::atan2(glm::dot(b - centre, up), glm::dot(b - centre, right));
-  });
-  return points;
+  return plane.polygonInBlock(block);
 }
 
 void CutGizmo::setBlock(const Block& block) {

@@ -36,42 +36,8 @@ QVector3D toQt(glm::vec3 v) {
 
 // The plane's intersection with the block as a convex polygon in plane coordinates, counter-clockwise.
 std::vector<glm::vec2> cutPolygon(const CutPlane& plane, const Block& block) {
-  const glm::vec3 h = block.halfSize();
   std::vector<glm::vec2> points;
-  auto add = [&](glm::vec3 p) {
-    const glm::vec2 q = plane.toPlane(p);
-    for (const glm::vec2& r : points)
-      if (glm::length(r - q) < 1e-4f) return;
-    points.push_back(q);
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-    for (int corner = 0; corner < 4; ++corner) {
-      glm::vec3 start(0.0f);
-      start[a1] = (corner & 1) ? h[a1] : -h[a1];
-      start[a2] = (corner & 2) ? h[a2] : -h[a2];
-      start[axis] = -h[axis];
-      glm::vec3 dir(0.0f);
-      dir[axis] = 2.0f * h[axis];
-      const float denom = glm::dot(plane.normal(), dir);
-      const float num = glm::dot(plane.normal(), plane.point() - start);
-      if (std::abs(denom) < 1e-9f) {
-        if (std::abs(num) > 1e-5f) continue;
-        add(start), add(start + dir);  // the edge lies in the plane
-        continue;
-      }
-      const float t = num / denom;
-      if (t < -1e-6f || t > 1.0f + 1e-6f) continue;
-      add(start + std::clamp(t, 0.0f, 1.0f) * dir);
-    }
-  }
-  if (points.size() < 3) return {};
-  glm::vec2 centre(0.0f);
-  for (const glm::vec2& p : points) centre += p;
-  centre /= static_cast<float>(points.size());
-  std::sort(points.begin(), points.end(), [centre](glm::vec2 a, glm::vec2 b) {
-    return std::atan2(a.y - centre.y, a.x - centre.x) < std::atan2(b.y - centre.y, b.x - centre.x);
-  });
+  for (const glm::vec3& p : plane.polygonInBlock(block)) points.push_back(plane.toPlane(p));
   return points;
 }
 

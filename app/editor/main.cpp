@@ -9,6 +9,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "gl/surface_format.hpp"
 #include "main_window.hpp"
 #include "viewport3d.hpp"
 #include "window_grab.hpp"
@@ -41,11 +42,7 @@ void screenshotWhenReady(kerf::MainWindow& window, const QString& file) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // One OpenGL format for every view (3D block, cut panel), so their contexts match.
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  QSurfaceFormat::setDefaultFormat(format);
+  kerf::useKerfSurfaceFormat();  // as the editor does
   QApplication app(argc, argv);
   QApplication::setApplicationName(QStringLiteral("Kerf"));
   QApplication::setOrganizationName(QStringLiteral("Kerf"));

@@ -30,10 +30,14 @@ glm::vec2 CutPlane::toPlane(glm::vec3 p) const {
   return {glm::dot(d, right_), glm::dot(d, up_)};
 }
 
-std::optional<PlaneRect> CutPlane::boundsInBlock(const Block& block) const {
+std::vector<glm::vec3> CutPlane::polygonInBlock(const Block& block) const {
   const glm::vec3 h = block.halfSize();
-  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  bool any = false;
+  std::vector<glm::vec3> points;
+  const auto add = [&](glm::vec3 p) {
+    for (const glm::vec3& q : points)
+      if (glm::length(q - p) < 1e-4f * (1.0f + glm::length(h))) return;
+    points.push_back(p);
+  };
   // Intersect the plane with the 12 box edges: along each axis, 4 edges.
   for (int axis = 0; axis < 3; ++axis) {
     const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
@@ -46,22 +50,36 @@ std::optional<PlaneRect> CutPlane::boundsInBlock(const Block& block) const {
       dir[axis] = 2.0f * h[axis];
       const float denom = glm::dot(normal_, dir);
       const float num = glm::dot(normal_, point_ - start);
-      float t;
       if (std::abs(denom) < 1e-9f) {
-        if (std::abs(num) > 1e-5f) continue;  // edge parallel to the plane and off it
-        for (float tt : {0.0f, 1.0f}) {       // edge lies in the plane: both ends count
-          const glm::vec2 q = toPlane(start + tt * dir);
-          lo = glm::min(lo, q), hi = glm::max(hi, q), any = true;
-        }
+        if (std::abs(num) <= 1e-5f) add(start), add(start + dir);  // the edge lies in the plane
         continue;
       }
-      t = num / denom;
+      const float t = num / denom;
       if (t < -1e-6f || t > 1.0f + 1e-6f) continue;
-      const glm::vec2 q = toPlane(start + std::clamp(t, 0.0f, 1.0f) * dir);
-      lo = glm::min(lo, q), hi = glm::max(hi, q), any = true;
+      add(start + std::clamp(t, 0.0f, 1.0f) * dir);
     }
   }
-  if (!any || hi.x - lo.x <= 0.0f || hi.y - lo.y <= 0.0f) return std::nullopt;
+  if (points.size() < 3) return {};
+  glm::vec3 centre(0.0f);
+  for (const glm::vec3& p : points) centre += p;
+  centre /= static_cast<float>(points.size());
+  const auto angle = [&](const glm::vec3& p) {  // right x up = normal: increasing angle is CCW from +n
+    return std::atan2(glm::dot(p - centre, up_), glm::dot(p - centre, right_));
+  };
+  std::sort(points.begin(), points.end(),
+            [&](const glm::vec3& a, const glm::vec3& b) { return angle(a) < angle(b); });
+  return points;
+}
+
+std::optional<PlaneRect> CutPlane::boundsInBlock(const Block& block) const {
+  const std::vector<glm::vec3> polygon = polygonInBlock(block);
+  if (polygon.empty()) return std::nullopt;
+  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const glm::vec3& p : polygon) {
+    const glm::vec2 q = toPlane(p);
+    lo = glm::min(lo, q), hi = glm::max(hi, q);
+  }
+  if (hi.x - lo.x <= 0.0f || hi.y - lo.y <= 0.0f) return std::nullopt;
   return PlaneRect{lo, hi};
 }
 
@@ -79,7 +97,8 @@ CutPlaneSetting CutPlaneSetting::fromPlane(const CutPlane& plane) {
   CutPlaneSetting s;
   s.offsetMm = glm::dot(plane.point(), n);
   s.elevationDeg = glm::degrees(std::asin(std::clamp(n.y, -1.0f, 1.0f)));
-  s.azimuthDeg = (std::abs(n.x) < 1e-7f && std::abs(n.z) < 1e-7f) ? 0.0f : glm::degrees(std::atan2(-n.z, n.x));
+  s.azimuthDeg =
+      (std::abs(n.x) < 1e-7f && std::abs(n.z) < 1e-7f) ? 0.0f : glm::degrees(std::atan2(-n.z, n.x));
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <vector>
 
 #include "geometry/block.hpp"
 
@@ -32,8 +33,10 @@ class CutPlane {
   glm::vec3 toBlock(glm::vec2 planeMm) const { return point_ + planeMm.x * right_ + planeMm.y * up_; }
   glm::vec2 toPlane(glm::vec3 p) const;
 
-  // The rectangle in plane coordinates that bounds the plane's intersection with the block,
-  // or nothing when the plane misses the block.
+  // The plane's intersection with the block: a convex polygon (3 to 6 corners, block mm), counter-
+  // clockwise seen from the normal's side; empty when the plane misses the block or only grazes it.
+  std::vector<glm::vec3> polygonInBlock(const Block& block) const;
+  // The rectangle in plane coordinates that bounds that polygon, or nothing when there is none.
   std::optional<PlaneRect> boundsInBlock(const Block& block) const;
 
  private:

@@ -19,6 +19,7 @@
 #include "demo/demo_block.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
+#include "gl/surface_format.hpp"
 #include "main_window.hpp"
 #include "parameter_panel.hpp"
 #include "qt_image.hpp"
@@ -369,10 +370,7 @@ void TestMainWindow::savesScreenshot() {
 }
 
 int main(int argc, char** argv) {
-  QSurfaceFormat format;  // as the editor's main()
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  QSurfaceFormat::setDefaultFormat(format);
+  kerf::useKerfSurfaceFormat();  // as the editor does
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("KerfTests"));
   TestMainWindow test;

@@ -69,3 +69,21 @@ TEST(CutPlaneSetting, AnglesAndSnapping) {
   EXPECT_FLOAT_EQ(snapped.offsetMm, 3.5f);
   EXPECT_FLOAT_EQ(CutPlaneSetting({0, 50, 80}).snapped(90.0f).elevationDeg, 90.0f);
 }
+
+TEST(CutPlane, PolygonInBlockIsConvexAndCounterClockwise) {
+  const Block block(glm::vec3(40.0f, 30.0f, 20.0f));
+  EXPECT_EQ(CutPlane({0, 0, 0}, {0, 0, 1}).polygonInBlock(block).size(), 4u);
+  EXPECT_EQ(CutPlane({0, 0, 0}, {1, 1, 1}).polygonInBlock(block).size(), 6u);    // the hexagon
+  EXPECT_EQ(CutPlane({19, 14, 9}, {1, 1, 1}).polygonInBlock(block).size(), 3u);  // a corner cut off
+  EXPECT_TRUE(CutPlane({0, 0, 30}, {0, 0, 1}).polygonInBlock(block).empty());
+  const CutPlane plane({2, -1, 3}, {0.3f, 1.0f, -0.4f});
+  const auto polygon = plane.polygonInBlock(block);
+  ASSERT_GE(polygon.size(), 3u);
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::vec3 a = polygon[i], b = polygon[(i + 1) % polygon.size()],
+                    c = polygon[(i + 2) % polygon.size()];
+    EXPECT_TRUE(block.contains(a));
+    EXPECT_NEAR(glm::dot(a - plane.point(), plane.normal()), 0.0f, 1e-4f);
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - b), plane.normal()), 0.0f);  // turns left seen from +n
+  }
+}
