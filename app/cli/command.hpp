@@ -1,0 +1,34 @@
+#pragma once
+// kerf-cli's subcommands: each lives in its own file and registers itself on the CLI11 app with an
+// add...Command() function returning what to run when it was chosen. main.cpp lists them.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "util/progress.hpp"
+#include "util/resource_usage.hpp"
+
+namespace kerf::cli {
+
+// What every command shares: --stats, --quiet, and the count of model evaluations for throughput.
+struct Context {
+  bool stats = false;
+  bool quiet = false;
+  std::size_t samples = 0;    // model evaluations done (pixels/voxels x supersamples), for --stats
+  Progress progress() const;  // a console percentage on stderr unless quiet
+  void printStats(const std::string& command) const;
+};
+
+struct Command {
+  CLI::App* subcommand;
+  std::function<void(Context&)> run;  // throws InputError / Cancelled
+};
+
+Command addDemoCommand(CLI::App& app);
+Command addRenderFacesCommand(CLI::App& app);
+Command addRenderCutCommand(CLI::App& app);
+Command addExportVolumeCommand(CLI::App& app);
+Command addParamsCommand(CLI::App& app);
+
+}  // namespace kerf::cli

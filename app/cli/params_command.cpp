@@ -1,0 +1,36 @@
+// params: the parameter schema as JSON.
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "params/parameter_schema.hpp"
+
+namespace kerf::cli {
+
+Command addParamsCommand(CLI::App& app) {
+  auto* params = app.add_subcommand("params", "Print the parameter schema as JSON");
+  return {params, [](Context&) {
+            nlohmann::ordered_json out = nlohmann::ordered_json::array();
+            for (const ParamSpec& spec : parameterSchema()) {
+              nlohmann::ordered_json def =
+                  spec.components() == 1
+                      ? nlohmann::ordered_json(spec.defaultValue[0])
+                      : nlohmann::ordered_json::array(
+                            {spec.defaultValue[0], spec.defaultValue[1], spec.defaultValue[2]});
+              out.push_back({{"id", spec.id},
+                             {"group", spec.group},
+                             {"label", spec.label},
+                             {"unit", spec.unit},
+                             {"kind", paramKindName(spec.kind)},
+                             {"default", def},
+                             {"soft_range", {spec.softMin, spec.softMax}},
+                             {"hard_range", {spec.hardMin, spec.hardMax}},
+                             {"fittable", spec.fittable},
+                             {"glsl_uniform", "u_" + std::string(spec.name)},
+                             {"tooltip", spec.tooltip}});
+            }
+            std::cout << out.dump(2) << "\n";
+          }};
+}
+
+}  // namespace kerf::cli

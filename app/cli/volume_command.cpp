@@ -1,0 +1,35 @@
+// export-volume: the growth field or the colour as a NRRD volume.
+#include <cstdio>
+
+#include "command.hpp"
+#include "io/project.hpp"
+#include "render/volume_export.hpp"
+
+namespace kerf::cli {
+
+Command addExportVolumeCommand(CLI::App& app) {
+  auto* volume = app.add_subcommand("export-volume", "Write the growth field or the colour as a NRRD volume");
+  struct Options {
+    std::string document, quantity = "growth", out;
+    int resolution = 128;
+  };
+  auto o = std::make_shared<Options>();
+  volume->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
+  volume->add_option("--quantity", o->quantity, "growth (float years) or color (uint8 RGB)")
+      ->check(CLI::IsMember({"growth", "color"}));
+  volume->add_option("--res", o->resolution, "Samples along the block's longest side")
+      ->check(CLI::Range(1, 4096));
+  volume->add_option("--out", o->out, "Output .nrrd file")->required();
+  return {volume, [o](Context& context) {
+            const Project project = loadDocument(o->document);
+            const WoodModel model(project);
+            const VolumeExportResult result = exportVolume(model, volumeQuantityFromName(o->quantity),
+                                                           o->resolution, o->out, context.progress());
+            context.samples = result.samples;
+            std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
+                        o->out.c_str(), result.size.x, result.size.y, result.size.z, result.spacingMm.x,
+                        result.bytes / 1048576.0);
+          }};
+}
+
+}  // namespace kerf::cli
