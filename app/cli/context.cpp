@@ -22,7 +22,7 @@ Progress Context::progress() const {
 
 void Context::printStats(const std::string& command) const {
   if (!stats) return;
-  const double s = clock.seconds();
+  const double s = stopwatch.seconds();
   std::fprintf(
       stderr,
       "stats: command=%s wall=%.3f s threads=%d samples=%zu throughput=%.3g samples/s peak_rss=%.1f MiB\n",
