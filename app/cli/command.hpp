@@ -16,6 +16,7 @@ struct Context {
   bool stats = false;
   bool quiet = false;
   std::size_t samples = 0;    // model evaluations done (pixels/voxels x supersamples), for --stats
+  Stopwatch stopwatch;  // started with the program
   Progress progress() const;  // a console percentage on stderr unless quiet
   void printStats(const std::string& command) const;
 };
