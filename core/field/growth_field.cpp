@@ -37,19 +37,36 @@ GrowthField::GrowthField(const PithAxis& axis, float ringWidthMm, const GrowthRa
   }
 }
 
-float GrowthField::radialValue(int ih, int ia, float r) const {
-  const int nr = rates_.radii;
+GrowthField::RadialPosition GrowthField::radialPosition(float r) const {
+  RadialPosition position;
+  position.radius = r;
   if (r <= rates_.radiusMin) {
-    return rates_.radiusMin > 0.0f ? node(ih, ia, 0) * (r / rates_.radiusMin) : 0.0f;
+    position.region = RadialPosition::InsideFirstNode;
+    return position;
   }
   const float f = (r - rates_.radiusMin) / radialStep_;
-  if (f >= nr) {
-    const float lastRate = std::max(rates_.at(ih, ia, nr - 1), 0.0f) / ringWidth_;
-    return node(ih, ia, nr) + (r - rates_.radiusMax) * lastRate;
+  if (f >= rates_.radii) {
+    position.region = RadialPosition::BeyondLastNode;
+    return position;
   }
-  const int ir = static_cast<int>(f);
-  const float t = f - ir;
-  return node(ih, ia, ir) + t * (node(ih, ia, ir + 1) - node(ih, ia, ir));
+  position.cell = static_cast<int>(f);
+  position.t = f - position.cell;
+  return position;
+}
+
+float GrowthField::radialValue(int ih, int ia, const RadialPosition& p) const {
+  switch (p.region) {
+    case RadialPosition::InsideFirstNode:
+      return rates_.radiusMin > 0.0f ? node(ih, ia, 0) * (p.radius / rates_.radiusMin) : 0.0f;
+    case RadialPosition::BeyondLastNode: {
+      const int nr = rates_.radii;
+      const float lastRate = std::max(rates_.at(ih, ia, nr - 1), 0.0f) / ringWidth_;
+      return node(ih, ia, nr) + (p.radius - rates_.radiusMax) * lastRate;
+    }
+    case RadialPosition::BetweenNodes:
+      break;
+  }
+  return node(ih, ia, p.cell) + p.t * (node(ih, ia, p.cell + 1) - node(ih, ia, p.cell));
 }
 
 namespace {
@@ -85,11 +102,20 @@ float GrowthField::evaluate(const Cylindrical& c) const {
   float wa[4];
   bsplineWeights(fa - ia, wa);
 
+  // The four spokes around the point, wrapped around the circle (ia is in [0, na]).
+  int spokes[4];
+  for (int j = 0; j < 4; ++j) {
+    int spoke = ia - 1 + j;
+    if (spoke < 0) spoke += na;
+    while (spoke >= na) spoke -= na;
+    spokes[j] = spoke;
+  }
+  const RadialPosition radial = radialPosition(c.radius);
   float g = 0.0f;
   for (int i = 0; i < 4; ++i) {
     const int h = std::clamp(ih - 1 + i, 0, nh - 1);
     float row = 0.0f;
-    for (int j = 0; j < 4; ++j) row += wa[j] * radialValue(h, ((ia - 1 + j) % na + na) % na, c.radius);
+    for (int j = 0; j < 4; ++j) row += wa[j] * radialValue(h, spokes[j], radial);
     g += wh[i] * row;
   }
   return g;

@@ -41,7 +41,15 @@ class GrowthField {
   float node(int ih, int ia, int ir) const {
     return cumulative_[(static_cast<std::size_t>(ih) * rates_.azimuths + ia) * (rates_.radii + 1) + ir];
   }
-  float radialValue(int ih, int ia, float radius) const;
+  // Where a radius falls on the radial nodes: worked out once per point, used for 16 columns.
+  struct RadialPosition {
+    enum Region { InsideFirstNode, BetweenNodes, BeyondLastNode } region = BetweenNodes;
+    int cell = 0;
+    float t = 0.0f;
+    float radius = 0.0f;
+  };
+  RadialPosition radialPosition(float radius) const;
+  float radialValue(int ih, int ia, const RadialPosition& position) const;
 
   PithAxis axis_;
   float ringWidth_;

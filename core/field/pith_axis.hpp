@@ -28,7 +28,8 @@ struct PithAxis {
   // made perpendicular to it, so it is well defined for every direction.
   static PithAxis fromDirection(glm::vec3 origin, glm::vec3 direction);
 
-  Cylindrical toCylindrical(glm::vec3 p) const {
+  // withAzimuth = false skips the atan2 (azimuth left 0) where only the frame and radius are needed.
+  Cylindrical toCylindrical(glm::vec3 p, bool withAzimuth = true) const {
     const glm::vec3 rel = p - origin;
     const float h = glm::dot(rel, direction);
     const float x = glm::dot(rel, reference);
@@ -37,7 +38,7 @@ struct PithAxis {
     Cylindrical c;
     c.height = h;
     c.radius = r;
-    c.azimuth = std::atan2(y, x);
+    c.azimuth = withAzimuth ? std::atan2(y, x) : 0.0f;
     c.x = x;
     c.y = y;
     if (r > 1e-12f) {

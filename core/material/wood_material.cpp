@@ -135,13 +135,13 @@ float WoodMaterial::rayWeight(const Cylindrical& c) const {
 
 float WoodMaterial::year(glm::vec3 p) const {
   const PithAxis& axis = field_.axis();
-  return field_.evaluate(axis.toCylindrical(undistort(p, axis.toCylindrical(p), nullptr)));
+  return field_.evaluate(axis.toCylindrical(undistort(p, axis.toCylindrical(p, false), nullptr)));
 }
 
 WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDirection) const {
   WoodSample out;
   const PithAxis& axis = field_.axis();
-  const Cylindrical distorted = axis.toCylindrical(p);
+  const Cylindrical distorted = axis.toCylindrical(p, false);  // undistort needs no azimuth
   const glm::vec3 u = undistort(p, distorted, withFiberDirection ? &out.fiberDirection : nullptr);
   const Cylindrical c = axis.toCylindrical(u);
 
