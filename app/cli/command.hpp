@@ -16,7 +16,7 @@ struct Context {
   bool stats = false;
   bool quiet = false;
   std::size_t samples = 0;    // model evaluations done (pixels/voxels x supersamples), for --stats
-  Stopwatch stopwatch;  // started with the program
+  Stopwatch stopwatch;        // started with the program
   Progress progress() const;  // a console percentage on stderr unless quiet
   void printStats(const std::string& command) const;
 };
@@ -31,5 +31,7 @@ Command addRenderFacesCommand(CLI::App& app);
 Command addRenderCutCommand(CLI::App& app);
 Command addExportVolumeCommand(CLI::App& app);
 Command addParamsCommand(CLI::App& app);
+Command addDetectCommand(CLI::App& app);
+Command addFitCommand(CLI::App& app);
 
 }  // namespace kerf::cli

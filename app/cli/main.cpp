@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
 
   const std::vector<cli::Command> commands = {
       cli::addDemoCommand(app),         cli::addRenderFacesCommand(app), cli::addRenderCutCommand(app),
-      cli::addExportVolumeCommand(app), cli::addParamsCommand(app),
+      cli::addExportVolumeCommand(app), cli::addParamsCommand(app),      cli::addDetectCommand(app),
+      cli::addFitCommand(app),
   };
 
   try {

@@ -1,0 +1,105 @@
+// detect: automatic ring localization on the face photos of a sample folder or project
+// (Mokume Sec. 5.1): DIR/A_arl.png .. F_arl.png and DIR/contours.json (docs/rings.md).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image.hpp"
+#include "io/project.hpp"
+#include "rings/contours.hpp"
+#include "rings/ring_detector.hpp"
+#include "util/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace kerf::cli {
+
+Command addDetectCommand(CLI::App& app) {
+  auto* detect = app.add_subcommand(
+      "detect", "Find the annual rings on the face photos: A_arl.png..F_arl.png and contours.json");
+  struct Options {
+    std::string document, out;
+    bool allowMissing = false;
+  };
+  auto o = std::make_shared<Options>();
+  detect->add_option("SAMPLE", o->document, "A Mokume-style sample folder (A_col.png ..) or a .kerf project")
+      ->required();
+  detect->add_option("--out", o->out, "Output folder (created if needed)")->required();
+  detect->add_flag("--allow-missing", o->allowMissing, "Skip faces without a photo instead of failing");
+  return {
+      detect, [o](Context& context) {
+        const Project project = loadDocument(o->document);
+        std::vector<FaceId> faces;
+        std::string missing;
+        for (FaceId face : kAllFaces) {
+          if (!project.facePhotos[faceIndex(face)].empty())
+            faces.push_back(face);
+          else
+            missing += std::string(missing.empty() ? "" : ", ") + faceLetter(face);
+        }
+        if (!missing.empty() && !o->allowMissing)
+          throw InputError(o->document + " has no photo for face " + missing +
+                           " (expected <face>_col.png; --allow-missing skips those faces)");
+        fs::create_directories(o->out);
+        const ClassicalRingDetector detector;
+        nlohmann::json facesJson = nlohmann::json::object();
+        std::string summary;
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+          const FaceId face = faces[i];
+          const std::string letter(1, faceLetter(face));
+          const fs::path photoPath = project.facePhotos[faceIndex(face)];
+          const Image photo = readImage(photoPath);
+          const FaceFrame frame = project.block.face(face);
+          const float pxPerMmX = photo.width / frame.widthMm, pxPerMmY = photo.height / frame.heightMm;
+          if (std::abs(pxPerMmX - pxPerMmY) > 0.03f * std::max(pxPerMmX, pxPerMmY))
+            std::fprintf(stderr,
+                         "kerf-cli: warning: face %s photo %s is %dx%d px but the face is %.4g x %.4g mm; "
+                         "the pixels are not square\n",
+                         letter.c_str(), photoPath.filename().c_str(), photo.width, photo.height,
+                         frame.widthMm, frame.heightMm);
+          const Progress base = context.progress();
+          Progress progress = base;
+          const double from = static_cast<double>(i) / faces.size(), span = 1.0 / faces.size();
+          progress.report = base.report ? std::function<void(double)>(
+                                              [base, from, span](double f) { base.report(from + span * f); })
+                                        : nullptr;
+          const Image arl = detector.localize(photo, 0.5f * (pxPerMmX + pxPerMmY), progress);
+          writeImage(fs::path(o->out) / (letter + "_arl.png"), arl);
+          const auto contours = extractContours(arl, face);
+          nlohmann::json list = nlohmann::json::array();
+          for (const FaceContour& c : contours) {
+            nlohmann::json points = nlohmann::json::array();
+            for (const glm::ivec2& p : c.pixels) points.push_back({p.x, p.y});
+            list.push_back(std::move(points));
+          }
+          facesJson[letter] = {{"photo", photoPath.filename().string()},
+                               {"arl", letter + "_arl.png"},
+                               {"width", arl.width},
+                               {"height", arl.height},
+                               {"px_per_mm", 0.5 * (pxPerMmX + pxPerMmY)},
+                               {"contours", std::move(list)}};
+          summary += " " + letter + ":" + std::to_string(contours.size());
+          context.samples += static_cast<std::size_t>(photo.width) * photo.height;
+        }
+        const nlohmann::json document = {
+            {"format", "kerf-ring-contours"},
+            {"version", 1},
+            {"detector", detector.name()},
+            {"threshold", 200},
+            {"pixel_convention",
+             "[x, y] = column, row of the ARL image; the pixel's centre is at Kerf image coordinates "
+             "(x + 0.5, y + 0.5)"},
+            {"faces", std::move(facesJson)}};
+        writeTextAtomically(fs::path(o->out) / "contours.json", document.dump() + "\n");
+        std::printf("rings written to %s (%zu faces: <face>_arl.png, contours.json); contours per face:%s\n",
+                    o->out.c_str(), faces.size(), summary.c_str());
+      }};
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,347 @@
+#include "fit/distortion_fit.hpp"
+
+#include <ceres/ceres.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "field/growth_field.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace kerf {
+
+namespace {
+
+// Uniform cubic B-spline weights, as GrowthField::evaluate.
+void bsplineWeights(double t, double w[4]) {
+  const double s = 1.0 - t, t2 = t * t, t3 = t2 * t;
+  w[0] = s * s * s / 6.0;
+  w[1] = (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0;
+  w[2] = (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0;
+  w[3] = t3 / 6.0;
+}
+
+// Coefficients grouped by column (ih * azimuths + ia): radii weights per column.
+std::map<int, std::vector<double>> columnCoefficients(const GrowthRates& g, const PithAxis& axis,
+                                                      float ringWidth, glm::vec3 p) {
+  const Cylindrical c = axis.toCylindrical(p);
+  const int nh = g.heights, na = g.azimuths, nr = g.radii;
+  float fh = 0.0f;
+  if (nh > 1) {
+    fh = (c.height - g.heightMin) / (g.heightMax - g.heightMin) * (nh - 1);
+    fh = std::clamp(fh, 0.0f, static_cast<float>(nh - 1));
+  }
+  const int ih = std::min(static_cast<int>(fh), nh - 1);
+  double wh[4], wa[4];
+  bsplineWeights(fh - ih, wh);
+  float fa = (c.azimuth + std::numbers::pi_v<float>)*(na / (2.0f * std::numbers::pi_v<float>));
+  fa = std::clamp(fa, 0.0f, static_cast<float>(na));
+  const int ia = static_cast<int>(fa);
+  bsplineWeights(fa - ia, wa);
+
+  // Radial coefficients of one column (shared by all 16 columns: they depend on r only).
+  std::vector<double> radial(nr, 0.0);
+  const double r = c.radius, step = (g.radiusMax - g.radiusMin) / nr;
+  if (r <= g.radiusMin) {
+    if (g.radiusMin > 0) radial[0] = r;
+  } else {
+    const double f = (r - g.radiusMin) / step;
+    radial[0] += g.radiusMin;
+    if (f >= nr) {
+      for (int k = 0; k < nr; ++k) radial[k] += step;
+      radial[nr - 1] += r - g.radiusMax;
+    } else {
+      const int ir = static_cast<int>(f);
+      for (int k = 0; k < ir; ++k) radial[k] += step;
+      radial[ir] += (f - ir) * step;
+    }
+  }
+  for (double& v : radial) v /= ringWidth;
+
+  std::map<int, std::vector<double>> columns;
+  for (int i = 0; i < 4; ++i) {
+    const int h = std::clamp(ih - 1 + i, 0, nh - 1);
+    for (int j = 0; j < 4; ++j) {
+      const int a = ((ia - 1 + j) % na + na) % na;
+      const double w = wh[i] * wa[j];
+      if (w == 0.0) continue;
+      auto& col = columns[h * na + a];
+      if (col.empty()) col.assign(nr, 0.0);
+      for (int k = 0; k < nr; ++k) col[k] += w * radial[k];
+    }
+  }
+  return columns;
+}
+
+// One contour point: rho(sum_k A_k exp(s_k) - level).
+class PointCost final : public ceres::CostFunction {
+ public:
+  PointCost(std::vector<std::vector<double>> weights, int radii, double scale, double sqrtWeight)
+      : w_(std::move(weights)), radii_(radii), b2_(scale * scale), sw_(sqrtWeight) {
+    set_num_residuals(1);
+    for (std::size_t i = 0; i < w_.size(); ++i) mutable_parameter_block_sizes()->push_back(radii);
+    mutable_parameter_block_sizes()->push_back(1);
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const int n = static_cast<int>(w_.size());
+    double g = 0;
+    for (int b = 0; b < n; ++b)
+      for (int k = 0; k < radii_; ++k)
+        if (w_[b][k] != 0.0) g += w_[b][k] * std::exp(parameters[b][k]);
+    const double r = g - parameters[n][0];
+    const double sq = std::sqrt(1.0 + r * r / b2_), kf = std::sqrt(2.0 / (sq + 1.0));
+    residuals[0] = sw_ * r * kf;
+    if (jacobians) {
+      const double df = sw_ * (kf - r * r / (kf * (sq + 1.0) * (sq + 1.0) * b2_ * sq));
+      for (int b = 0; b < n; ++b) {
+        if (!jacobians[b]) continue;
+        for (int k = 0; k < radii_; ++k)
+          jacobians[b][k] = w_[b][k] != 0.0 ? df * w_[b][k] * std::exp(parameters[b][k]) : 0.0;
+      }
+      if (jacobians[n]) jacobians[n][0] = -df;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<std::vector<double>> w_;
+  int radii_;
+  double b2_, sw_;
+};
+
+class LinearDifference final : public ceres::CostFunction {
+ public:
+  // Two blocks: w (a_k - b_k); one block: w (a_{k+1} - a_k).
+  LinearDifference(int n, bool twoBlocks, double w) : n_(n), two_(twoBlocks), w_(w) {
+    set_num_residuals(two_ ? n : n - 1);
+    mutable_parameter_block_sizes()->push_back(n);
+    if (two_) mutable_parameter_block_sizes()->push_back(n);
+  }
+  bool Evaluate(double const* const* p, double* r, double** j) const override {
+    const int m = num_residuals();
+    for (int k = 0; k < m; ++k) r[k] = two_ ? w_ * (p[0][k] - p[1][k]) : w_ * (p[0][k + 1] - p[0][k]);
+    if (j) {
+      for (int b = 0; b < (two_ ? 2 : 1); ++b) {
+        if (!j[b]) continue;
+        std::fill(j[b], j[b] + static_cast<std::size_t>(m) * n_, 0.0);
+        for (int k = 0; k < m; ++k) {
+          if (two_) {
+            j[b][k * n_ + k] = b == 0 ? w_ : -w_;
+          } else {
+            j[b][k * n_ + k] = -w_;
+            j[b][k * n_ + k + 1] = w_;
+          }
+        }
+      }
+    }
+    return true;
+  }
+
+ private:
+  int n_;
+  bool two_;
+  double w_;
+};
+
+// w * s for one block.
+class Ridge final : public ceres::CostFunction {
+ public:
+  Ridge(int n, double w) : n_(n), w_(w) {
+    set_num_residuals(n);
+    mutable_parameter_block_sizes()->push_back(n);
+  }
+  bool Evaluate(double const* const* p, double* r, double** j) const override {
+    for (int k = 0; k < n_; ++k) r[k] = w_ * p[0][k];
+    if (j && j[0]) {
+      std::fill(j[0], j[0] + static_cast<std::size_t>(n_) * n_, 0.0);
+      for (int k = 0; k < n_; ++k) j[0][k * n_ + k] = w_;
+    }
+    return true;
+  }
+
+ private:
+  int n_;
+  double w_;
+};
+
+class Callback final : public ceres::IterationCallback {
+ public:
+  Callback(const Progress& p, int max) : progress_(p), max_(max) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    progress_.set(std::min(1.0, static_cast<double>(s.iteration + 1) / max_));
+    return progress_.stop.stop_requested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const Progress& progress_;
+  int max_;
+};
+
+}  // namespace
+
+std::vector<RateCoefficient> growthCoefficients(const GrowthRates& layout, const PithAxis& axis,
+                                                float ringWidthMm, glm::vec3 p) {
+  std::vector<RateCoefficient> out;
+  for (const auto& [col, w] : columnCoefficients(layout, axis, ringWidthMm, p))
+    for (int k = 0; k < layout.radii; ++k)
+      if (w[k] != 0.0) out.push_back({col * layout.radii + k, w[k]});
+  return out;
+}
+
+DistortionFitResult fitDistortions(const IsoContours& contours, const Block& block, const PithAxis& axis,
+                                   float ringWidthMm, const DistortionFitOptions& options,
+                                   const Progress& progress) {
+  if (contours.count() == 0) throw InputError("no ring contours to fit the growth rates to");
+  const auto t0 = std::chrono::steady_clock::now();
+  DistortionFitResult result;
+  GrowthRates layout = GrowthRates::uniform(block, axis, options.heights, options.azimuths, options.radii);
+  const int nr = layout.radii, columns = layout.heights * layout.azimuths;
+  result.lossBefore = isoContourLoss(contours, GrowthField(axis, ringWidthMm, layout), 1.0);
+
+  std::vector<double> s(static_cast<std::size_t>(columns) * nr, 0.0);
+  std::vector<double> level(contours.count(), 0.0);
+  // Evenly subsampled points.
+  const int total = static_cast<int>(contours.points.size());
+  const int stride = std::max(1, (total + options.maxFitPoints - 1) / std::max(1, options.maxFitPoints));
+  std::vector<int> pointIndex, pointContour;
+  for (int c = 0; c < contours.count(); ++c) {
+    const int n = contours.size(c);
+    const int step = std::min(stride, std::max(1, n / 2));
+    for (int i = step / 2; i < n; i += step)
+      pointIndex.push_back(contours.begin[c] + i), pointContour.push_back(c);
+  }
+  const int m = static_cast<int>(pointIndex.size());
+  std::vector<std::map<int, std::vector<double>>> coefficients(m);
+  parallelRows(m, [&](int i) {
+    coefficients[i] = columnCoefficients(layout, axis, ringWidthMm, contours.points[pointIndex[i]]);
+  });
+  // Levels start at each contour's median value of the undeformed field.
+  {
+    std::vector<std::vector<double>> values(contours.count());
+    for (int i = 0; i < m; ++i) {
+      double g = 0;
+      for (const auto& [col, w] : coefficients[i])
+        for (double v : w) g += v;
+      values[pointContour[i]].push_back(g);
+    }
+    for (int c = 0; c < contours.count(); ++c) level[c] = lowerMedian(values[c]);
+  }
+
+  ceres::Problem problem;
+  const double sw = 1.0 / std::sqrt(static_cast<double>(m));
+  for (int i = 0; i < m; ++i) {
+    std::vector<std::vector<double>> weights;
+    std::vector<double*> blocks;
+    for (const auto& [col, w] : coefficients[i]) {
+      weights.push_back(w);
+      blocks.push_back(&s[static_cast<std::size_t>(col) * nr]);
+    }
+    blocks.push_back(&level[pointContour[i]]);
+    problem.AddResidualBlock(new PointCost(std::move(weights), nr, options.robustScaleYears, sw), nullptr,
+                             blocks);
+  }
+  // Smoothness: neighbouring spokes (periodic), heights, radial cells.
+  const int pairs = columns * 2 + columns;
+  const double ws = std::sqrt(options.smoothness / (static_cast<double>(pairs) * nr));
+  auto col = [&](int h, int a) { return &s[static_cast<std::size_t>(h * layout.azimuths + a) * nr]; };
+  for (int h = 0; h < layout.heights; ++h)
+    for (int a = 0; a < layout.azimuths; ++a) {
+      problem.AddResidualBlock(new LinearDifference(nr, true, ws), nullptr, col(h, a),
+                               col(h, (a + 1) % layout.azimuths));
+      if (h + 1 < layout.heights)
+        problem.AddResidualBlock(new LinearDifference(nr, true, ws), nullptr, col(h, a), col(h + 1, a));
+      if (nr > 1) problem.AddResidualBlock(new LinearDifference(nr, false, ws), nullptr, col(h, a));
+    }
+  // Ridge towards uniform rates (s = 0), per column: keeps the scale of G from drifting (a smaller G makes
+  // every contour residual smaller) without the dense coupling of a hard mean constraint.
+  const double wr = std::sqrt(options.ridge / (static_cast<double>(columns) * nr));
+  for (int c = 0; c < columns; ++c)
+    problem.AddResidualBlock(new Ridge(nr, wr), nullptr, &s[static_cast<std::size_t>(c) * nr]);
+
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  so.max_num_iterations = options.maxIterations;
+  so.function_tolerance = 1e-8;
+  so.num_threads = 1;  // bitwise reproducible (Ceres sums costs per thread)
+  Callback callback(progress, options.maxIterations);
+  so.callbacks.push_back(&callback);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  progress.throwIfCancelled();
+
+  layout.rates.resize(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) layout.rates[k] = static_cast<float>(std::exp(s[k]));
+  result.rates = layout;
+  result.lossAfter = isoContourLoss(contours, GrowthField(axis, ringWidthMm, layout), 1.0);
+  result.iterations = static_cast<int>(summary.iterations.size());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace kerf
+
+namespace kerf {
+
+GrowthRates remapRingsToWholeYears(const GrowthRates& rates, float ringWidthMm,
+                                   const std::vector<double>& ringLevelsYears, int radii) {
+  if (ringLevelsYears.size() < 2) throw InputError("at least two ring levels are needed to place the rings");
+  std::vector<double> a = ringLevelsYears;
+  std::sort(a.begin(), a.end());
+  std::vector<double> gaps;
+  for (std::size_t i = 1; i < a.size(); ++i) gaps.push_back(a[i] - a[i - 1]);
+  const double gap = std::max(1e-6, lowerMedian(gaps));
+  const double k0 = std::max(1.0, std::round(a[0] / gap));
+  // phi: knots (0, 0), (a_i, k0 + i); beyond the last knot slope 1/gap.
+  std::vector<double> x{0.0}, y{0.0};
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i] > x.back() + 1e-9) x.push_back(a[i]), y.push_back(k0 + static_cast<double>(i));
+  auto phi = [&](double g) {
+    if (g >= x.back()) return y.back() + (g - x.back()) / gap;
+    if (g <= 0) return g * (y[1] / x[1]);
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), g) - x.begin());
+    const double t = (g - x[i - 1]) / (x[i] - x[i - 1]);
+    return y[i - 1] + t * (y[i] - y[i - 1]);
+  };
+  const GrowthField old(PithAxis{}, ringWidthMm, rates);  // only the radial tables are used
+  GrowthRates out = rates;
+  out.radii = radii;
+  out.rates.assign(static_cast<std::size_t>(rates.heights) * rates.azimuths * radii, 1.0f);
+  const int nrOld = rates.radii;
+  const double stepOld = (rates.radiusMax - rates.radiusMin) / nrOld;
+  const double step = (rates.radiusMax - rates.radiusMin) / radii;
+  const std::vector<float>& table = old.cumulative();
+  for (int h = 0; h < rates.heights; ++h)
+    for (int az = 0; az < rates.azimuths; ++az) {
+      const float* column = &table[(static_cast<std::size_t>(h) * rates.azimuths + az) * (nrOld + 1)];
+      auto gOld = [&](double r) {
+        const double f = std::clamp((r - rates.radiusMin) / stepOld, 0.0, static_cast<double>(nrOld));
+        const int i = std::min(static_cast<int>(f), nrOld - 1);
+        return column[i] + (f - i) * (column[i + 1] - column[i]);
+      };
+      // Node 0 is tied to the first cell's rate (G(radiusMin) = radiusMin * R_0 / w).
+      double current;
+      double r0;
+      const double target0 = phi(gOld(rates.radiusMin));
+      if (rates.radiusMin > 0) {
+        r0 = std::max(1e-4, target0 * ringWidthMm / rates.radiusMin);
+        current = rates.radiusMin * r0 / ringWidthMm;
+      } else {
+        r0 = std::max(1e-4, (phi(gOld(step)) - target0) * ringWidthMm / step);
+        current = 0;
+      }
+      out.at(h, az, 0) = static_cast<float>(r0);
+      current += step * r0 / ringWidthMm;
+      for (int j = 1; j < radii; ++j) {
+        const double target = phi(gOld(rates.radiusMin + (j + 1) * step));
+        const double rate = std::max(1e-4, (target - current) * ringWidthMm / step);
+        out.at(h, az, j) = static_cast<float>(rate);
+        current += step * rate / ringWidthMm;
+      }
+    }
+  return out;
+}
+
+}  // namespace kerf
