@@ -125,6 +125,50 @@ void FacesView::clear() {
   update();
 }
 
+void FacesView::setOverlayPolylines(const std::array<std::vector<QPolygonF>, 6>& polylines,
+                                    const std::array<QSize, 6>& imageSizes) {
+  overlay_ = polylines;
+  overlaySizes_ = imageSizes;
+  update();
+}
+
+void FacesView::clearOverlay() {
+  overlay_ = {};
+  overlaySizes_ = {};
+  update();
+}
+
+bool FacesView::hasOverlay() const {
+  return std::any_of(overlay_.begin(), overlay_.end(), [](const auto& lines) { return !lines.empty(); });
+}
+
+void FacesView::setOverlayVisible(bool visible) {
+  if (visible == overlayVisible_) return;
+  overlayVisible_ = visible;
+  update();
+}
+
+void FacesView::drawOverlay(QPainter& painter, const QRectF& target, FaceId face) const {
+  const int i = faceIndex(face);
+  const QSize size = overlaySizes_[i];
+  if (!overlayVisible_ || overlay_[i].empty() || size.isEmpty()) return;
+  painter.save();
+  painter.setClipRect(target.intersected(rect()));
+  painter.translate(target.topLeft());
+  painter.scale(target.width() / size.width(), target.height() / size.height());
+  // Cosmetic pens keep their width whatever the zoom; a dark outline keeps the colour readable on
+  // light and dark wood alike.
+  QPen outline(QColor(0, 0, 0, 150), 3.0);
+  outline.setCosmetic(true);
+  QPen line(QColor(255, 40, 200), 1.6);
+  line.setCosmetic(true);
+  for (const QPen& pen : {outline, line}) {
+    painter.setPen(pen);
+    for (const QPolygonF& polyline : overlay_[i]) painter.drawPolyline(polyline);
+  }
+  painter.restore();
+}
+
 FacesView::Layers FacesView::layers() const {
   const bool photos = anyImage(photos_), model = anyImage(renderings_);
   if (!photos) return {&renderings_, nullptr};
@@ -515,6 +559,7 @@ void FacesView::paintEvent(QPaintEvent*) {
         painter.setOpacity(1.0);
       }
     }
+    drawOverlay(painter, target, face);
     if (dropFace_ == face) {
       painter.setPen(QPen(QColor(90, 170, 255), 3));
       painter.setBrush(QColor(90, 170, 255, 50));

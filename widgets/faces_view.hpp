@@ -15,11 +15,13 @@
 // images at once go to the faces their names start with ("A_col.png" -> A); a .kerf file or a folder
 // -> documentDropped(path).
 #include <QImage>
+#include <QPolygonF>
 #include <QRectF>
 #include <QString>
 #include <QWidget>
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "geometry/block.hpp"
 
@@ -56,6 +58,17 @@ class FacesView : public QWidget {
   // Opacity of the model over the photos in Blend display, 0 (photos only) .. 1 (model only).
   void setBlendOpacity(double opacity);
   double blendOpacity() const { return blendOpacity_; }
+
+  // Polylines drawn over the faces (ring contours): per face A..F, in the pixel coordinates of an image
+  // of imageSizes[face] pixels covering the whole face (continuous coordinates: a pixel's centre is at
+  // (x + 0.5, y + 0.5)), so they line up with the photo whatever set is shown. Open polylines, drawn in
+  // a bright colour while overlayVisible().
+  void setOverlayPolylines(const std::array<std::vector<QPolygonF>, 6>& polylines,
+                           const std::array<QSize, 6>& imageSizes);
+  void clearOverlay();
+  bool hasOverlay() const;
+  void setOverlayVisible(bool visible);
+  bool overlayVisible() const { return overlayVisible_; }
 
   // Shown centred while there are no faces ("Rendering faces…").
   void setPlaceholderText(const QString& text);
@@ -120,10 +133,14 @@ class FacesView : public QWidget {
   void drawFace(class QPainter& painter, const QRectF& target, const QImage& image) const;
   void drawLabel(QPainter& painter, const QRectF& rect, FaceId face, qreal side) const;
   void drawCaption(QPainter& painter) const;
+  void drawOverlay(QPainter& painter, const QRectF& target, FaceId face) const;
   void updateCursorText(std::optional<QPointF> widgetPos);
   bool acceptDrag(class QDropEvent* event);  // sets dropFace_; true when the drop would do something
 
   std::array<QImage, 6> photos_, renderings_;
+  std::array<std::vector<QPolygonF>, 6> overlay_;
+  std::array<QSize, 6> overlaySizes_;
+  bool overlayVisible_ = true;
   Block block_;
   FaceDisplay display_ = FaceDisplay::Photos;
   double blendOpacity_ = 0.5;

@@ -5,13 +5,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <optional>
 
 #include "command.hpp"
 #include "field/growth_field.hpp"
+#include "fit/anatomy_prior.hpp"
 #include "fit/distortion_fit.hpp"
 #include "fit/iso_contour_loss.hpp"
 #include "fit/iso_contours.hpp"
 #include "fit/pith_fit.hpp"
+#include "io/image.hpp"
 #include "io/project.hpp"
 #include "util/error.hpp"
 
@@ -57,6 +60,8 @@ Command addFitCommand(CLI::App& app) {
   struct Options {
     std::string sample, out, principal = "y";
     bool pithOnly = false;
+    bool ignoreAnatomy = false;
+    double anatomyWeight = 1.0;
   };
   auto o = std::make_shared<Options>();
   fit->add_option("SAMPLE", o->sample, "A Mokume-style sample folder with A_arl-unet.png .. F_arl-unet.png")
@@ -66,6 +71,12 @@ Command addFitCommand(CLI::App& app) {
                   "Expected pith direction: the block axis x, y or z (default y)")
       ->check(CLI::IsMember({"x", "y", "z"}));
   fit->add_flag("--pith-only", o->pithOnly, "Step 1 only: no growth-rate (distortion) fit; uniform rates");
+  fit->add_flag("--ignore-anatomy", o->ignoreAnatomy,
+                "Fit the pith to the ring contours alone; the fibre direction seen in the photos (X_col.png) "
+                "is still reported");
+  fit->add_option("--anatomy-weight", o->anatomyWeight,
+                  "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
+      ->check(CLI::Range(0.0, 100.0));
   return {
       fit, [o](Context& context) {
         const fs::path folder = o->sample;
@@ -102,6 +113,32 @@ Command addFitCommand(CLI::App& app) {
         options.principal = o->principal == "x"   ? glm::vec3(1, 0, 0)
                             : o->principal == "z" ? glm::vec3(0, 0, 1)
                                                   : glm::vec3(0, 1, 0);
+        // Anatomical prior (fit/anatomy_prior.hpp): the fibre direction from the face photos' texture.
+        std::optional<AnatomyEstimate> anatomy;
+        {
+          std::array<Image, 6> photos;
+          int found = 0;
+          for (FaceId face : kAllFaces) {
+            const fs::path file = folder / (std::string(1, faceLetter(face)) + "_col.png");
+            if (!fs::exists(file)) continue;
+            photos[faceIndex(face)] = readImage(file);
+            ++found;
+          }
+          if (found > 0) {
+            anatomy = estimateFibreDirection(photos, block);
+            std::printf(
+                "anatomy: fibre direction from the texture of %d face photos F = (%.3f, %.3f, %.3f), "
+                "confidence %.3f%s\n",
+                anatomy->facesUsed, anatomy->fibre.x, anatomy->fibre.y, anatomy->fibre.z, anatomy->confidence,
+                o->ignoreAnatomy || o->anatomyWeight <= 0 ? " (not used by the fit)" : " (used as a prior)");
+          } else {
+            std::printf("anatomy: no face photos (X_col.png); the pith is fitted to the contours alone\n");
+          }
+        }
+        if (anatomy && !o->ignoreAnatomy) {
+          options.anatomy = anatomy;
+          options.anatomyWeight = o->anatomyWeight;
+        }
         const PithFitResult result = fitPith(contours, block, options, context.progress());
         for (const std::string& w : result.warnings)
           std::fprintf(stderr, "kerf-cli: warning: %s\n", w.c_str());
@@ -113,6 +150,14 @@ Command addFitCommand(CLI::App& app) {
         std::printf("%d contours, %d points (%d used by the continuous fit), %d grid candidates\n",
                     result.contours, result.points, result.fitPoints, result.gridCandidates);
         printCandidate("pith", result.best, rings.ringWidthMm);
+        if (anatomy) {
+          const double angle = anatomyAngleDeg(*anatomy, result.best.axis.direction);
+          std::printf("anatomy: the pith axis is %.1f deg from the fibre direction: %s\n", angle,
+                      angle <= 20.0 ? "agrees"
+                      : anatomy->confidence < 0.1f
+                          ? "disagrees, but the fibre estimate is weak"
+                          : "DISAGREES - the contours favour an axis the wood anatomy contradicts");
+        }
         std::printf("rings: width %.4f mm, phase %.4f (%zu rings found, median spacing %.4f mm)\n",
                     rings.ringWidthMm, rings.ringOffset, rings.peaksMm.size(), rings.medianSpacingMm);
         if (result.flipped) {

@@ -57,6 +57,14 @@ void Document::applyParameters(const WoodParameters& params, const QString& undo
   undo_.push(new SetAllParametersCommand(this, project_.params, params, undoText));
 }
 
+void Document::applyGrowthField(const WoodParameters& params, std::optional<GrowthRates> rates,
+                                const QString& undoText) {
+  validate(params);
+  if (rates) rates->validate();
+  undo_.push(
+      new SetGrowthFieldCommand(this, project_.params, project_.rates, params, std::move(rates), undoText));
+}
+
 void Document::editCutPlane(const CutPlaneSetting& setting, bool finished) {
   undo_.push(new SetCutPlaneCommand(this, cutPlane(), setting, finished));
 }
@@ -90,6 +98,13 @@ void Document::applyParameterValue(std::size_t index, std::array<float, 3> value
 
 void Document::applyAllParameters(const WoodParameters& params) {
   project_.params = params;
+  rebuildModel();
+  emit modelChanged();
+}
+
+void Document::applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates) {
+  project_.params = params;
+  project_.rates = rates;
   rebuildModel();
   emit modelChanged();
 }

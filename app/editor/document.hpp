@@ -9,6 +9,7 @@
 #include <QUndoStack>
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "geometry/cut_plane.hpp"
 #include "io/project.hpp"
@@ -43,6 +44,11 @@ class Document : public QObject {
   // dragged) merge into one step, closed by the edit with finished = true.
   void editParameter(std::size_t index, std::array<float, 3> value, bool finished);
   void applyParameters(const WoodParameters& params, const QString& undoText);
+  // Replaces the growth field as one undo step: the parameters (growth.*, and any others that differ)
+  // together with the explicit growth rates (std::nullopt: rates synthesised from the parameters).
+  // Validates both first (InputError; nothing is pushed then).
+  void applyGrowthField(const WoodParameters& params, std::optional<GrowthRates> rates,
+                        const QString& undoText);
   void editCutPlane(const CutPlaneSetting& setting, bool finished);
   void replacePhoto(FaceId face, const QString& path, const QImage& image);
   // The cut's visibility is a view setting: saved with the project, but not an undo step.
@@ -59,6 +65,7 @@ class Document : public QObject {
   // Used by the undo commands only: set a value without pushing a command.
   void applyParameterValue(std::size_t index, std::array<float, 3> value);
   void applyAllParameters(const WoodParameters& params);
+  void applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates);
   void applyCutPlane(const CutPlaneSetting& setting);
   void applyPhoto(FaceId face, const QString& path, const QImage& image);
 

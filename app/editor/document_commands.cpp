@@ -44,6 +44,25 @@ void SetAllParametersCommand::redo() {
   document_->applyAllParameters(after_);
 }
 
+SetGrowthFieldCommand::SetGrowthFieldCommand(Document* document, WoodParameters beforeParams,
+                                             std::optional<GrowthRates> beforeRates,
+                                             WoodParameters afterParams,
+                                             std::optional<GrowthRates> afterRates, const QString& text)
+    : document_(document),
+      beforeParams_(std::move(beforeParams)),
+      afterParams_(std::move(afterParams)),
+      beforeRates_(std::move(beforeRates)),
+      afterRates_(std::move(afterRates)) {
+  setText(text);
+}
+
+void SetGrowthFieldCommand::undo() {
+  document_->applyGrowthFieldValue(beforeParams_, beforeRates_);
+}
+void SetGrowthFieldCommand::redo() {
+  document_->applyGrowthFieldValue(afterParams_, afterRates_);
+}
+
 SetCutPlaneCommand::SetCutPlaneCommand(Document* document, const CutPlaneSetting& before,
                                        const CutPlaneSetting& after, bool finished)
     : document_(document), before_(before), after_(after), finished_(finished) {

@@ -6,7 +6,9 @@
 #include <QImage>
 #include <QUndoCommand>
 #include <array>
+#include <optional>
 
+#include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
 #include "params/parameter_schema.hpp"
@@ -43,6 +45,21 @@ class SetAllParametersCommand : public QUndoCommand {
  private:
   Document* document_;
   WoodParameters before_, after_;
+};
+
+// The growth field as a whole (a fit's result): parameters and explicit rates, before and after.
+class SetGrowthFieldCommand : public QUndoCommand {
+ public:
+  SetGrowthFieldCommand(Document* document, WoodParameters beforeParams,
+                        std::optional<GrowthRates> beforeRates, WoodParameters afterParams,
+                        std::optional<GrowthRates> afterRates, const QString& text);
+  void undo() override;
+  void redo() override;
+
+ private:
+  Document* document_;
+  WoodParameters beforeParams_, afterParams_;
+  std::optional<GrowthRates> beforeRates_, afterRates_;
 };
 
 class SetCutPlaneCommand : public QUndoCommand {

@@ -232,6 +232,7 @@ void MainWindow::connectDocument() {
     cutControls_->setCutEnabled(document_->cutEnabled());
   });
   connect(document_, &Document::photosChanged, this, [this] {
+    clearRingDetection();  // the detection belonged to the photos that were there
     facesView_->setPhotos(document_->photos());
     viewport_->setFacePhotos(document_->photos());
     updateFacesView();

@@ -5,8 +5,10 @@
 // cancel, never on the GUI thread).
 #include <QMainWindow>
 #include <array>
+#include <memory>
 
 #include "document_jobs.hpp"
+#include "fit_job.hpp"
 
 class QAction;
 class QActionGroup;
@@ -70,6 +72,19 @@ class MainWindow : public QMainWindow {
   QAction* undoAction() const { return undoAction_; }
   QAction* redoAction() const { return redoAction_; }
 
+  // Rings menu. Detect Rings runs the ring detector on every face photo (a job); the ring-localization
+  // images and contours are kept here, with the window, not in the project file, and the contours
+  // are drawn over the faces (View > Show Ring Contours). Fit Growth Field fits the growth field to
+  // the detected images (or to the sample folder's own X_arl*.png when nothing was detected) and
+  // applies it as one undo step.
+  void detectRings();
+  void fitGrowthField();
+  // Null before a detection, and after the photos change.
+  std::shared_ptr<const RingDetection> ringDetection() const { return ringDetection_; }
+  QAction* detectRingsAction() const { return detectRingsAction_; }
+  QAction* fitGrowthAction() const { return fitGrowthAction_; }
+  QAction* showContoursAction() const { return showContoursAction_; }
+
  signals:
   // The document has loaded and its faces have rendered (at full resolution).
   void documentReady();
@@ -79,6 +94,11 @@ class MainWindow : public QMainWindow {
   void facesRendered();
   // A quicker, coarser rendering of the faces is on screen (before facesRendered).
   void facesPreviewed();
+  // Detect Rings / Fit Growth Field finished and their result is shown / applied.
+  void ringsDetected();
+  void growthFieldFitted();
+  // Either of them failed (the message is also in the log and a message box) or was cancelled.
+  void ringJobFailed(const QString& message);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -87,6 +107,9 @@ class MainWindow : public QMainWindow {
   void createViews();
   void createDocks();
   void createMenus();
+  void createRingsMenu();
+  void clearRingDetection();
+  void ringJobEnded(int id, const QString& message);
   void connectDocument();
   void restoreLayout();
   void useDefaultLayout();
@@ -125,6 +148,8 @@ class MainWindow : public QMainWindow {
   int displayMode_ = 0;  // FaceDisplay as int
   bool displayChosenByUser_ = false;
   int renderJob_ = 0;
+  int ringJob_ = 0, fitJob_ = 0;
+  std::shared_ptr<const RingDetection> ringDetection_;
 
   FacesView* facesView_ = nullptr;
   Viewport3D* viewport_ = nullptr;
@@ -141,6 +166,9 @@ class MainWindow : public QMainWindow {
   QAction* undoAction_ = nullptr;
   QAction* redoAction_ = nullptr;
   QAction* showPhotosOn3dAction_ = nullptr;
+  QAction* detectRingsAction_ = nullptr;
+  QAction* fitGrowthAction_ = nullptr;
+  QAction* showContoursAction_ = nullptr;
 };
 
 }  // namespace kerf

@@ -86,8 +86,18 @@ void MainWindow::createMenus() {
       tr("Project the face photos onto the 3D block to compare them with the model"));
   connect(showPhotosOn3dAction_, &QAction::toggled, viewport_, &Viewport3D::setShowPhotos);
   view->addAction(tr("Reset 3D &Camera"), viewport_, &Viewport3D::resetCamera)->setShortcut(Qt::Key_Home);
+  showContoursAction_ = view->addAction(tr("Show Ring &Contours"));
+  showContoursAction_->setCheckable(true);
+  showContoursAction_->setChecked(true);
+  showContoursAction_->setEnabled(false);
+  showContoursAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+  showContoursAction_->setToolTip(
+      tr("Draw the detected ring contours over the faces (Rings ▸ Detect Rings)"));
+  connect(showContoursAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+
+  createRingsMenu();
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Kerf"), this, [this] {

@@ -184,6 +184,40 @@ class StopCallback final : public ceres::IterationCallback {
   const Progress& progress_;
 };
 
+// The anatomical prior's weight and fibre direction in frame coordinates; weight 0 without one.
+struct Prior {
+  double weight = 0;  // anatomyWeight * confidence
+  glm::dvec3 fibre{0, 0, 1};
+  Prior(const Frame& fr, const PithFitOptions& o) {
+    if (!o.anatomy || o.anatomyWeight <= 0) return;
+    weight = o.anatomyWeight * o.anatomy->confidence;
+    const glm::dvec3 f(o.anatomy->fibre);
+    fibre = {glm::dot(f, fr.e1), glm::dot(f, fr.e2), glm::dot(f, fr.e3)};
+  }
+  // 1 - (V.F)^2 of the direction (a, b, 1) in frame coordinates.
+  double sin2(const double* x) const {
+    const glm::dvec3 v = glm::normalize(glm::dvec3(x[2], x[3], 1.0));
+    const double c = glm::dot(v, fibre);
+    return 1.0 - c * c;
+  }
+};
+
+// sqrt(k) * (V x F) with V = (a, b, 1) / |(a, b, 1)|: half its squared norm is k/2 * (1 - (V.F)^2).
+struct PriorResidual {
+  double sqrtK;
+  glm::dvec3 f;
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    using std::sqrt;
+    const T n = sqrt(x[2] * x[2] + x[3] * x[3] + T(1.0));
+    const T v0 = x[2] / n, v1 = x[3] / n, v2 = T(1.0) / n;
+    r[0] = sqrtK * (v1 * f.z - v2 * f.y);
+    r[1] = sqrtK * (v2 * f.x - v0 * f.z);
+    r[2] = sqrtK * (v0 * f.y - v1 * f.x);
+    return true;
+  }
+};
+
 struct Refined {
   std::array<double, 4> x;
   double cost;
@@ -191,7 +225,7 @@ struct Refined {
 };
 
 Refined refineParams(const Samples& s, int levels, std::array<double, 4> x, const PithFitOptions& options,
-                     const Progress& progress) {
+                     const Progress& progress, const Prior& prior) {
   // Levels start at each contour's median distance.
   std::vector<double> level(levels, 0.0), tmp;
   for (int c = 0; c < levels; ++c) {
@@ -202,8 +236,19 @@ Refined refineParams(const Samples& s, int levels, std::array<double, 4> x, cons
   ceres::Problem::Options po;
   po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(po);
-  problem.AddResidualBlock(new ContourCost(s, levels, options.robustScaleMm), nullptr, x.data(),
-                           level.data());
+  auto* contourCost = new ContourCost(s, levels, options.robustScaleMm);
+  problem.AddResidualBlock(contourCost, nullptr, x.data(), level.data());
+  if (prior.weight > 0) {
+    // k = 2 * weight * (contour cost at the start): the prior adds weight * sin^2 of the start's cost.
+    std::vector<double> res(s.p.size());
+    const double* params[2] = {x.data(), level.data()};
+    contourCost->Evaluate(params, res.data(), nullptr);
+    double cost0 = 0;
+    for (double r : res) cost0 += 0.5 * r * r;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorResidual, 3, 4>(
+                                 new PriorResidual{std::sqrt(2.0 * prior.weight * cost0), prior.fibre}),
+                             nullptr, x.data());
+  }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;  // robust where the normal equations are ill-conditioned
   so.minimizer_type = ceres::TRUST_REGION;
@@ -220,7 +265,8 @@ Refined refineParams(const Samples& s, int levels, std::array<double, 4> x, cons
   return {x, summary.final_cost, static_cast<int>(summary.iterations.size())};
 }
 
-PithCandidate makeCandidate(const IsoContours& contours, const Frame& fr, const Refined& r) {
+PithCandidate makeCandidate(const IsoContours& contours, const Frame& fr, const Refined& r,
+                            const PithFitOptions& options) {
   PithCandidate c;
   c.axis = axisFromParams(fr, r.x.data());
   pithAngles(c.axis.direction, c.tiltDeg, c.azimuthDeg);
@@ -229,6 +275,8 @@ PithCandidate makeCandidate(const IsoContours& contours, const Frame& fr, const 
       contours, [&axis](glm::vec3 p) { return static_cast<double>(axis.toCylindrical(p).radius); }, 0.0);
   c.solverCost = r.cost;
   c.iterations = r.iterations;
+  if (options.anatomy) c.anatomyPenalty = anatomyPenalty(*options.anatomy, c.axis.direction);
+  c.score = c.loss.meanOverFaces * (1.0 + std::max(0.0, options.anatomyWeight) * c.anatomyPenalty);
   return c;
 }
 
@@ -258,8 +306,10 @@ PithCandidate refinePith(const IsoContours& contours, const Block&, const PithAx
   if (contours.count() == 0) throw InputError("no ring contours to fit the pith to");
   const Frame fr(options.principal);
   const Samples fit = subsample(contours, fr, options.maxFitPoints, 0);
-  return makeCandidate(contours, fr,
-                       refineParams(fit, contours.count(), paramsFromAxis(fr, start), options, progress));
+  return makeCandidate(
+      contours, fr,
+      refineParams(fit, contours.count(), paramsFromAxis(fr, start), options, progress, Prior(fr, options)),
+      options);
 }
 
 PithFitResult fitPith(const IsoContours& contours, const Block& block, const PithFitOptions& options,
@@ -276,6 +326,7 @@ PithFitResult fitPith(const IsoContours& contours, const Block& block, const Pit
     result.warnings.push_back("all contours lie on one face: the pith direction is poorly constrained");
   }
   const Frame fr(options.principal);
+  const Prior prior(fr, options);
 
   // 1. Grid search.
   const auto t0 = Clock::now();
@@ -316,7 +367,8 @@ PithFitResult fitPith(const IsoContours& contours, const Block& block, const Pit
         std::vector<double> d;
         const std::size_t end = std::min(grid.size(), static_cast<std::size_t>(k + 1) * kChunk);
         for (std::size_t i = static_cast<std::size_t>(k) * kChunk; i < end; ++i)
-          gridLoss[i] = sampledLoss(coarse, contours, grid[i].data(), d);
+          gridLoss[i] = sampledLoss(coarse, contours, grid[i].data(), d) *
+                        (1.0 + prior.weight * prior.sin2(grid[i].data()));
       },
       gridProgress);
   std::vector<int> order(grid.size());
@@ -342,13 +394,14 @@ PithFitResult fitPith(const IsoContours& contours, const Block& block, const Pit
   std::vector<PithCandidate> refined;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     progress.throwIfCancelled();
-    const Refined r = refineParams(fit, contours.count(), paramsFromAxis(fr, starts[i]), options, progress);
-    refined.push_back(makeCandidate(contours, fr, r));
+    const Refined r =
+        refineParams(fit, contours.count(), paramsFromAxis(fr, starts[i]), options, progress, prior);
+    refined.push_back(makeCandidate(contours, fr, r, options));
     progress.set(0.4 + 0.6 * static_cast<double>(i + 1) / slots);
   }
   std::size_t bestIndex = 0;
   for (std::size_t i = 1; i < refined.size(); ++i)
-    if (refined[i].loss.meanOverFaces < refined[bestIndex].loss.meanOverFaces) bestIndex = i;
+    if (refined[i].score < refined[bestIndex].score) bestIndex = i;
   result.best = refined[bestIndex];
 
   // 3. Flip ambiguity: mirror the axis through the plane through the centre perpendicular to the
@@ -358,19 +411,18 @@ PithFitResult fitPith(const IsoContours& contours, const Block& block, const Pit
     const glm::vec3 n = glm::normalize(q);
     const glm::vec3 v = result.best.axis.direction;
     const PithAxis mirrored = PithAxis::fromDirection(-q, v - 2.0f * glm::dot(v, n) * n);
-    const Refined r = refineParams(fit, contours.count(), paramsFromAxis(fr, mirrored), options, progress);
-    PithCandidate flipped = makeCandidate(contours, fr, r);
+    const Refined r =
+        refineParams(fit, contours.count(), paramsFromAxis(fr, mirrored), options, progress, prior);
+    PithCandidate flipped = makeCandidate(contours, fr, r, options);
     // Also consider refined grid candidates that lie on the other side of the block.
     for (const PithCandidate& c : refined) {
-      if (glm::dot(c.axis.origin, q) < 0 && c.loss.meanOverFaces < flipped.loss.meanOverFaces) flipped = c;
+      if (glm::dot(c.axis.origin, q) < 0 && c.score < flipped.score) flipped = c;
     }
     const bool distinct =
         angleDeg(flipped.axis.direction, v) > 2.0 || axisSeparationMm(flipped.axis, result.best.axis) > 2.0;
-    if (distinct && flipped.loss.meanOverFaces < result.best.loss.meanOverFaces)
-      std::swap(flipped, result.best);
+    if (distinct && flipped.score < result.best.score) std::swap(flipped, result.best);
     if (distinct) {
-      result.ambiguous =
-          flipped.loss.meanOverFaces <= options.ambiguityRatio * result.best.loss.meanOverFaces;
+      result.ambiguous = flipped.score <= options.ambiguityRatio * result.best.score;
       result.flipped = flipped;
     }
   }

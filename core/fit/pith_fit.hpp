@@ -21,12 +21,19 @@
 //     block centre perpendicular to the direction towards the pith, and refined again. When it settles on
 //     a different axis whose loss is within ambiguityRatio of the best, the fit is ambiguous and both
 //     candidates are reported.
+//  4. Optional anatomical prior (fit/anatomy_prior.hpp): with `anatomy` set and anatomyWeight > 0, every
+//     candidate is ranked by score = loss * (1 + anatomyWeight * penalty(V)), penalty = confidence *
+//     (1 - (V.F)^2) for the fibre direction F seen in the photos (grid, refined candidates and the flip
+//     choice alike), and the Ceres refinement gets the matching prior residual sqrt(k) * (V x F) with
+//     k = 2 * anatomyWeight * confidence * (the contour cost at the start), i.e. the first-order
+//     additive form of the same product.
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "field/pith_axis.hpp"
+#include "fit/anatomy_prior.hpp"
 #include "fit/iso_contour_loss.hpp"
 #include "fit/iso_contours.hpp"
 #include "geometry/block.hpp"
@@ -46,6 +53,8 @@ struct PithFitOptions {
   double robustScaleMm = 0.3;    // soft-L1 scale
   int maxIterations = 100;
   double ambiguityRatio = 1.15;  // flipped candidate within this factor of the best loss: ambiguous
+  std::optional<AnatomyEstimate> anatomy;  // fibre direction from the photos (none: contours only)
+  double anatomyWeight = 1.0;              // strength of the anatomical prior (0: report only)
 };
 
 struct PithCandidate {
@@ -54,6 +63,8 @@ struct PithCandidate {
   IsoContourLoss loss;    // with g = distance to the axis (mm), all contour points; normalized is 0
   double solverCost = 0;  // Ceres' final cost
   int iterations = 0;
+  double anatomyPenalty = 0;  // confidence * (1 - (V.F)^2); 0 without an anatomy estimate
+  double score = 0;           // loss.meanOverFaces * (1 + anatomyWeight * anatomyPenalty): the ranking
 };
 
 struct PithFitResult {

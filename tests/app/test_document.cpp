@@ -6,6 +6,7 @@
 #include "autosave.hpp"
 #include "demo/demo_block.hpp"
 #include "document.hpp"
+#include "fit_job.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
@@ -83,6 +84,49 @@ class DocumentTest : public QObject {
     document_.undoStack()->undo();
     QCOMPARE(document_.project().params.ringWidth, demoProject().params.ringWidth);
     QCOMPARE(document_.project().params.latewoodColor, glm::vec3(0.1f, 0.2f, 0.3f));
+  }
+
+  void growthFieldIsOneUndoStep() {
+    const WoodParameters beforeParams = document_.project().params;
+    const std::optional<GrowthRates> beforeRates = document_.project().rates;
+    WoodParameters params = beforeParams;
+    params.ringWidth = beforeParams.ringWidth * 1.5f;
+    params.pithTilt = beforeParams.pithTilt + 2.0f;
+    const PithAxis axis = PithAxis::fromAngles(params.pithOrigin, params.pithTilt, params.pithAzimuth);
+    GrowthRates rates = GrowthRates::uniform(document_.project().block, axis);
+    for (std::size_t i = 0; i < rates.rates.size(); ++i) rates.rates[i] = 0.5f + 0.001f * (i % 100);
+    QSignalSpy modelChanged(&document_, &Document::modelChanged);
+    document_.applyGrowthField(params, rates, "Fit growth field");
+    QCOMPARE(document_.undoStack()->count(), 1);
+    QCOMPARE(document_.undoStack()->undoText(), QString("Fit growth field"));
+    QCOMPARE(modelChanged.count(), 1);
+    QVERIFY(document_.project().rates.has_value());
+    QCOMPARE(document_.project().rates->rates, rates.rates);
+    QCOMPARE(document_.project().params.ringWidth, params.ringWidth);
+    // The model is built from the explicit rates, not from rates synthesised from the parameters.
+    QCOMPARE(document_.model()->field().rates().rates, rates.rates);
+    QCOMPARE(document_.model()->params().pithTilt, params.pithTilt);
+
+    document_.undoStack()->undo();  // both come back together
+    QVERIFY(document_.project().params == beforeParams);
+    QCOMPARE(document_.project().rates.has_value(), beforeRates.has_value());
+    QVERIFY(document_.model()->field().rates().rates != rates.rates);
+    QVERIFY(!document_.isModified());
+    document_.undoStack()->redo();
+    QCOMPARE(document_.model()->field().rates().rates, rates.rates);
+
+    // Bad rates are refused before they reach the undo stack.
+    GrowthRates bad = rates;
+    bad.rates.pop_back();
+    QVERIFY_THROWS_EXCEPTION(InputError, document_.applyGrowthField(params, bad, "bad"));
+    QCOMPARE(document_.undoStack()->count(), 1);
+  }
+
+  void ringJobsSayWhatIsMissing() {
+    const Block block = document_.project().block;
+    QVERIFY_THROWS_EXCEPTION(InputError, detectRings({}, block));  // no photos
+    QVERIFY_THROWS_EXCEPTION(InputError,
+                             fitGrowthField({}, block, document_.project().params));  // no contours
   }
 
   void cutPlaneDragIsOneStep() {

@@ -19,7 +19,10 @@
 #include "demo/demo_block.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
+#include "field/growth_field.hpp"
 #include "gl/surface_format.hpp"
+#include "job_runner.hpp"
+#include "log_panel.hpp"
 #include "main_window.hpp"
 #include "parameter_panel.hpp"
 #include "qt_image.hpp"
@@ -71,6 +74,8 @@ class TestMainWindow : public QObject {
   void undoRestores();
   void saveAndReopenRoundTrip();
   void recoversAutosavedWorkAfterACrash();
+  void detectsRingsAndShowsContours();
+  void fitsGrowthFieldAsOneUndoStep();
   void savesScreenshot();
   void cleanupTestCase() { window_.reset(); }
 
@@ -360,6 +365,113 @@ void TestMainWindow::recoversAutosavedWorkAfterACrash() {
   QVERIFY(next.document()->hasPhotos());
   QVERIFY(!QFile::exists(leftover));
   QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+}
+
+// Rings ▸ Detect Rings on a demo with 256 px photos (Mokume's resolution): contours on several faces,
+// drawn over the faces while View ▸ Show Ring Contours is on.
+void TestMainWindow::detectsRingsAndShowsContours() {
+  DemoOptions options;
+  options.facePixels = 256;
+  options.samples = 1;
+  const QString project =
+      QString::fromStdString(writeDemo(dir_.filePath("demo256").toStdString(), options).project.string());
+  QSignalSpy ready(window_.get(), &MainWindow::documentReady);
+  window_->openDocument(project);
+  QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+  QVERIFY(window_->showingPhotos());
+  QVERIFY(!window_->ringDetection());
+  QVERIFY(!window_->showContoursAction()->isEnabled());
+
+  QSignalSpy detected(window_.get(), &MainWindow::ringsDetected);
+  QSignalSpy failed(window_.get(), &MainWindow::ringJobFailed);
+  window_->detectRingsAction()->trigger();
+  QVERIFY(window_->isBusy());  // a background job
+  QTRY_VERIFY_WITH_TIMEOUT(detected.count() + failed.count() > 0, kTimeoutMs);
+  QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
+  const auto detection = window_->ringDetection();
+  QVERIFY(detection);
+  QCOMPARE(detection->facesDetected, 6);
+  int facesWithContours = 0;
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    QCOMPARE(detection->arl[i].width, window_->document()->photos()[i].width());
+    facesWithContours += detection->contours[i].size() >= 2;
+  }
+  QVERIFY2(facesWithContours >= 4, qPrintable(QString("contours on %1 faces").arg(facesWithContours)));
+  QVERIFY(window_->facesView()->hasOverlay());
+  QVERIFY(window_->showContoursAction()->isEnabled());
+  QVERIFY(window_->showContoursAction()->isChecked());
+
+  // The overlay draws: the faces view changes when the contours are hidden, and comes back.
+  FacesView* view = window_->facesView();
+  QTest::qWait(50);
+  const QImage shown = view->grab().toImage();
+  window_->showContoursAction()->trigger();
+  QVERIFY(!view->overlayVisible());
+  const QImage hidden = view->grab().toImage();
+  const double share = changedShare(shown, hidden);
+  QVERIFY2(share > 0.01, qPrintable(QString("only %1 of the pixels changed").arg(share)));
+  window_->showContoursAction()->trigger();
+  QVERIFY(view->overlayVisible());
+  QCOMPARE(changedShare(shown, view->grab().toImage()), 0.0);
+  QVERIFY(QDir().mkpath(KERF_TEST_ARTIFACTS_DIR));
+  QVERIFY(shown.save(artifact("rings_faces")));
+  QVERIFY(grabWindowWithGl(window_.get()).save(artifact("rings_window")));
+  // A larger view of the same, to judge how the contours sit on the rings.
+  FacesView large;
+  large.resize(1400, 1050);
+  large.setBlock(window_->document()->project().block);
+  large.setPhotos(window_->document()->photos());
+  large.setOverlayPolylines(contourPolylines(*detection), detectionSizes(*detection));
+  QVERIFY(large.grab().toImage().save(artifact("rings_faces_large")));
+}
+
+// Rings ▸ Fit Growth Field on the detected rings: the growth parameters and rates change in one undo
+// step, and undo restores both.
+void TestMainWindow::fitsGrowthFieldAsOneUndoStep() {
+  QVERIFY(window_->ringDetection());
+  Document* document = window_->document();
+  const WoodParameters before = document->project().params;
+  const bool hadRates = document->project().rates.has_value();
+  const int steps = document->undoStack()->count();
+  QSignalSpy fitted(window_.get(), &MainWindow::growthFieldFitted);
+  QSignalSpy failed(window_.get(), &MainWindow::ringJobFailed);
+  // Cancel (the status bar's button, Esc) leaves the document as it was.
+  window_->fitGrowthAction()->trigger();
+  QVERIFY(window_->isBusy());
+  window_->jobs()->cancelAll();
+  QCOMPARE(failed.count(), 1);
+  QVERIFY(window_->jobs()->waitForDone(kTimeoutMs));
+  QTest::qWait(100);
+  QCOMPARE(fitted.count(), 0);
+  QCOMPARE(document->undoStack()->count(), steps);
+  QVERIFY(document->project().params == before);
+  failed.clear();
+
+  window_->fitGrowthAction()->trigger();
+  QVERIFY(window_->isBusy());
+  QTRY_VERIFY_WITH_TIMEOUT(fitted.count() + failed.count() > 0, 4 * kTimeoutMs);
+  QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
+  QCOMPARE(document->undoStack()->count(), steps + 1);
+  QCOMPARE(document->undoStack()->undoText(), QStringLiteral("Fit growth field"));
+  const WoodParameters after = document->project().params;
+  QVERIFY(after != before);
+  QVERIFY(after.pithOrigin != before.pithOrigin || after.pithTilt != before.pithTilt);
+  QVERIFY(after.ringWidth > 0.2f && after.ringWidth < 20.0f);
+  QVERIFY(document->project().rates.has_value());
+  QCOMPARE(document->model()->field().rates().rates, document->project().rates->rates);
+  // The log says what the fit found and how long it took.
+  const QString log = window_->log()->text();
+  for (const char* expected :
+       {"pith: O = (", ", V = (", "iso-contour loss", "ambiguity (Mokume B.1)", "time: contours"})
+    QVERIFY2(log.contains(QLatin1String(expected)), expected);
+
+  window_->undoAction()->trigger();
+  QVERIFY(document->project().params == before);
+  QCOMPARE(document->project().rates.has_value(), hadRates);
+  window_->redoAction()->trigger();
+  QVERIFY(document->project().params == after);
+  QVERIFY(window_->ringDetection());  // the detection stays with the photos
 }
 
 void TestMainWindow::savesScreenshot() {

@@ -1,0 +1,65 @@
+#pragma once
+// The editor's ring work, run off the GUI thread as JobRunner jobs: ring detection on the face photos
+// (ClassicalRingDetector, as `kerf-cli detect`) and the growth-field fit on ring-localization images
+// (pith axis, ring width and phase, then the growth rates: the pipeline of `kerf-cli fit`, calling the
+// core/fit functions directly). Self-contained functions of values: no QObject, no shared state.
+#include <QImage>
+#include <QPolygonF>
+#include <QSize>
+#include <QString>
+#include <QStringList>
+#include <array>
+#include <filesystem>
+#include <glm/vec2.hpp>
+#include <optional>
+#include <vector>
+
+#include "field/growth_rates.hpp"
+#include "fit/iso_contours.hpp"
+#include "geometry/block.hpp"
+#include "params/parameter_schema.hpp"
+#include "util/progress.hpp"
+
+namespace kerf {
+
+// What Detect Rings found: per face A..F, the ring-localization image (8-bit, the photo's size; empty
+// where the face has no photo) and its contours (pixel indices, docs/rings.md).
+struct RingDetection {
+  std::array<GrayImage8, 6> arl;
+  std::array<std::vector<std::vector<glm::ivec2>>, 6> contours;
+  std::array<double, 6> seconds{};
+  int facesDetected = 0;
+  int contourCount() const;
+  bool empty() const { return facesDetected == 0; }
+};
+
+// Runs ClassicalRingDetector on every face photo (A..F; null photos are skipped), at the resolution given
+// by the block (photo width / face width). Throws InputError without any photo, Cancelled on request.
+RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& block,
+                          const Progress& progress = {});
+
+// The contours as polylines in continuous image coordinates (pixel centres at x + 0.5, y + 0.5), for
+// FacesView::setOverlayPolylines, with the sizes of the images they belong to.
+std::array<std::vector<QPolygonF>, 6> contourPolylines(const RingDetection& detection);
+std::array<QSize, 6> detectionSizes(const RingDetection& detection);
+
+// The ring-localization images a sample folder holds (X_arl-unet.png, else the first X_arl*.png by
+// name), as `kerf-cli fit` reads them; faces without one are empty.
+std::array<GrayImage8, 6> readFolderRingImages(const std::filesystem::path& folder);
+
+struct GrowthFitResult {
+  WoodParameters params;  // the input parameters with growth.pith_*, ring_width, ring_offset replaced
+  GrowthRates rates;
+  QStringList report;  // lines for the log: contours, loss, O, V, ambiguity, timings
+  bool ambiguous = false;
+  double lossRings = 0;  // final iso-contour loss of the saved field, in ring spacings
+};
+
+// The growth-field fit of `kerf-cli fit` on the given ring-localization images. Throws InputError when
+// there are too few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled
+// on request.
+inline constexpr int kMinFitContours = 4;
+GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
+                               const WoodParameters& current, const Progress& progress = {});
+
+}  // namespace kerf
