@@ -2,12 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/geometric.hpp>
 
-#include "field/growth_field.hpp"
-#include "fit/distortion_fit.hpp"
-#include "fit/iso_contour_loss.hpp"
-#include "fit/pith_fit.hpp"
+#include "fit/growth_field_fit.hpp"
 #include "rings/contours.hpp"
 #include "rings/ring_detector.hpp"
 #include "util/error.hpp"
@@ -48,25 +44,6 @@ Progress part(const Progress& progress, double from, double to) {
   if (progress.report)
     sub.report = [report = progress.report, from, to](double f) { report(from + (to - from) * f); };
   return sub;
-}
-
-QString vec3Text(glm::vec3 v, int decimals) {
-  return QStringLiteral("(%1, %2, %3)")
-      .arg(v.x, 0, 'f', decimals)
-      .arg(v.y, 0, 'f', decimals)
-      .arg(v.z, 0, 'f', decimals);
-}
-
-QString candidateText(const QString& label, const PithCandidate& c, float ringWidthMm) {
-  return QStringLiteral(
-             "%1: O = %2 mm, V = %3 (tilt %4°, azimuth %5°), %6 mm from the block centre; "
-             "iso-contour loss %7 mm = %8 ring spacings")
-      .arg(label, vec3Text(c.axis.origin, 3), vec3Text(c.axis.direction, 5))
-      .arg(c.tiltDeg, 0, 'f', 2)
-      .arg(c.azimuthDeg, 0, 'f', 2)
-      .arg(glm::length(c.axis.origin), 0, 'f', 1)
-      .arg(c.loss.meanOverFaces, 0, 'f', 4)
-      .arg(ringWidthMm > 0 ? c.loss.meanOverFaces / ringWidthMm : 0.0, 0, 'f', 4);
 }
 
 }  // namespace
@@ -146,113 +123,22 @@ std::array<GrayImage8, 6> readFolderRingImages(const fs::path& folder) {
 }
 
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
-                               const WoodParameters& current, const Progress& progress) {
+                               const WoodParameters& current, const std::array<QImage, 6>& photos,
+                               const Progress& progress) {
+  GrowthFieldFitInput input{images, {}};
+  for (int i = 0; i < 6; ++i)
+    if (!photos[i].isNull()) input.photos[i] = fromQImage(photos[i]);
+  GrowthFieldFitOptions options;
+  options.minContours = kMinFitContours;
+  options.minFaces = 2;
+  const GrowthFieldFitResult fit = fitGrowthFieldToSample(input, block, current, options, progress);
   GrowthFitResult out;
-  const Stopwatch extractClock;
-  IsoContours contours;
-  QStringList perFace;
-  for (FaceId face : kAllFaces) {
-    const GrayImage8& image = images[faceIndex(face)];
-    if (image.empty()) continue;
-    const auto pixels = extractIsoContours(image);
-    addFaceContours(contours, block, face, {image.width, image.height}, pixels);
-    perFace << QStringLiteral("%1 %2").arg(QChar(faceLetter(face))).arg(pixels.size());
-  }
-  const double extractSeconds = extractClock.seconds();
-  if (contours.count() < kMinFitContours || contours.facesWithContours() < 2)
-    throw InputError(
-        QStringLiteral("too few ring contours to fit the growth field: %1 on %2 faces (at least %3 "
-                       "on two faces are needed); detect rings on sharper photos")
-            .arg(contours.count())
-            .arg(contours.facesWithContours())
-            .arg(kMinFitContours)
-            .toStdString());
-  out.report << QStringLiteral("contours per face: %1").arg(perFace.join(", "));
-  progress.throwIfCancelled();
-
-  const PithFitResult pith = fitPith(contours, block, PithFitOptions{}, part(progress, 0.0, 0.45));
-  for (const std::string& w : pith.warnings)
-    out.report << QStringLiteral("warning: %1").arg(QString::fromStdString(w));
-
-  const Stopwatch ringClock;
-  const RingLevelEstimate rings = estimateRingLevels(pith.best.axis, block, images);
-  const double ringSeconds = ringClock.seconds();
-  out.report << QStringLiteral("%1 contours, %2 points (%3 used by the continuous fit), %4 grid candidates")
-                    .arg(pith.contours)
-                    .arg(pith.points)
-                    .arg(pith.fitPoints)
-                    .arg(pith.gridCandidates);
-  out.report << candidateText(QStringLiteral("pith"), pith.best, rings.ringWidthMm);
-  out.report << QStringLiteral("rings: width %1 mm, phase %2 (%3 rings found)")
-                    .arg(rings.ringWidthMm, 0, 'f', 4)
-                    .arg(rings.ringOffset, 0, 'f', 4)
-                    .arg(rings.peaksMm.size());
-  out.ambiguous = pith.ambiguous;
-  if (pith.flipped) {
-    out.report << QStringLiteral("ambiguity (Mokume B.1): %1")
-                      .arg(pith.ambiguous
-                               ? QStringLiteral(
-                                     "AMBIGUOUS: the mirrored pith explains the rings almost as well")
-                               : QStringLiteral("the mirrored pith is clearly worse"));
-    out.report << candidateText(QStringLiteral("other candidate"), *pith.flipped, rings.ringWidthMm);
-  } else {
-    out.report << QStringLiteral(
-        "ambiguity (Mokume B.1): none (the mirrored start converged to the same axis)");
-  }
-
-  WoodParameters params = current;
-  params.pithOrigin = pith.best.axis.origin;
-  params.pithTilt = pith.best.tiltDeg;
-  params.pithAzimuth = pith.best.azimuthDeg;
-  // The axis exactly as the model rebuilds it from the parameters.
-  const PithAxis axis = PithAxis::fromAngles(params.pithOrigin, params.pithTilt, params.pithAzimuth);
-  const float width0 = rings.ringWidthMm;
-  const DistortionFitResult d = fitDistortions(contours, block, axis, width0, {}, part(progress, 0.45, 0.95));
-  const GrowthField field(axis, width0, d.rates);
-  const Stopwatch remapClock;
-  const RingLevelEstimate fitted = estimateRingLevels(
-      [&field, width0](glm::vec3 p) { return static_cast<double>(field.evaluate(p)) * width0; }, block,
-      images);
-  std::vector<double> levels;
-  for (float peak : fitted.peaksMm) levels.push_back(peak / width0);
-  GrowthRates rates = remapRingsToWholeYears(d.rates, width0, levels);
-  // Rates scaled to a median of 1 and the ring width with them (the field is unchanged), so
-  // growth.ring_width stays the typical ring width in mm.
-  std::vector<float> sorted = rates.rates;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const float median = sorted[sorted.size() / 2];
-  for (float& r : rates.rates) r /= median;
-  params.ringWidth = width0 / median;
-  params.ringOffset = 0.0f;
-  const GrowthField saved(axis, params.ringWidth, rates);
-  const IsoContourLoss finalLoss = isoContourLoss(contours, saved, 1.0);
-  const double remapSeconds = remapClock.seconds();
-  const double toRings = fitted.ringWidthMm > 0 ? width0 / fitted.ringWidthMm : 1.0;
-  out.report << QStringLiteral(
-                    "distortions: %1 x %2 x %3 rates, iso-contour loss %4 -> %5 ring spacings, %6 iterations")
-                    .arg(d.rates.heights)
-                    .arg(d.rates.azimuths)
-                    .arg(d.rates.radii)
-                    .arg(d.lossBefore.meanOverFaces, 0, 'f', 4)
-                    .arg(d.lossAfter.meanOverFaces * toRings, 0, 'f', 4)
-                    .arg(d.iterations);
-  out.report << QStringLiteral("fitted field: iso-contour loss %1 ring spacings, typical ring width %2 mm")
-                    .arg(finalLoss.meanOverFaces, 0, 'f', 4)
-                    .arg(params.ringWidth, 0, 'f', 4);
-  out.report << QStringLiteral(
-                    "time: contours %1 s, grid search %2 s, refinement %3 s, rings %4 s, distortions %5 s, "
-                    "ring placement %6 s")
-                    .arg(extractSeconds, 0, 'f', 3)
-                    .arg(pith.gridSeconds, 0, 'f', 3)
-                    .arg(pith.refineSeconds, 0, 'f', 3)
-                    .arg(ringSeconds, 0, 'f', 3)
-                    .arg(d.seconds, 0, 'f', 3)
-                    .arg(remapSeconds, 0, 'f', 3);
-  progress.set(1.0);
-  validate(params);
-  out.params = params;
-  out.rates = std::move(rates);
-  out.lossRings = finalLoss.meanOverFaces;
+  out.params = fit.params;
+  out.rates = *fit.rates;
+  for (const std::string& line : formatGrowthFieldFitReport(fit.report))
+    out.report << QString::fromStdString(line);
+  out.ambiguous = fit.report.pith.ambiguous;
+  out.lossRings = fit.report.finalLossRings;
   return out;
 }
 

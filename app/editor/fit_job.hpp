@@ -1,8 +1,8 @@
 #pragma once
 // The editor's ring work, run off the GUI thread as JobRunner jobs: ring detection on the face photos
 // (ClassicalRingDetector, as `kerf-cli detect`) and the growth-field fit on ring-localization images
-// (pith axis, ring width and phase, then the growth rates: the pipeline of `kerf-cli fit`, calling the
-// core/fit functions directly). Self-contained functions of values: no QObject, no shared state.
+// (pith axis, ring width and phase, then the growth rates: fitGrowthFieldToSample, the pipeline of
+// `kerf-cli fit`, fit/growth_field_fit.hpp). Self-contained functions of values: no QObject, no shared state.
 #include <QImage>
 #include <QPolygonF>
 #include <QSize>
@@ -55,11 +55,12 @@ struct GrowthFitResult {
   double lossRings = 0;  // final iso-contour loss of the saved field, in ring spacings
 };
 
-// The growth-field fit of `kerf-cli fit` on the given ring-localization images. Throws InputError when
-// there are too few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled
-// on request.
+// The growth-field fit of `kerf-cli fit` on the given ring-localization images, with the anatomical prior
+// from the face photos where there are any (null images: none). Throws InputError when there are too
+// few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled on request.
 inline constexpr int kMinFitContours = 4;
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
-                               const WoodParameters& current, const Progress& progress = {});
+                               const WoodParameters& current, const std::array<QImage, 6>& photos = {},
+                               const Progress& progress = {});
 
 }  // namespace kerf

@@ -127,12 +127,14 @@ void MainWindow::fitGrowthField() {
   }
   const Block block = document_->project().block;
   const WoodParameters current = document_->project().params;
+  const std::array<QImage, 6> photos = document_->photos();  // for the anatomical prior
   logMessage("info", detection ? tr("Fitting the growth field to the detected rings")
                                : tr("Fitting the growth field to the ring images in %1")
                                      .arg(QString::fromStdString(folder.string())));
   fitJob_ = jobs_->start(
       tr("Fitting growth field"),
-      [detection, folder, block, current](const Progress& progress, const JobRunner::Preview&) -> QVariant {
+      [detection, folder, block, current, photos](const Progress& progress,
+                                                  const JobRunner::Preview&) -> QVariant {
         std::array<GrayImage8, 6> images;
         if (detection) {
           images = detection->arl;
@@ -142,8 +144,8 @@ void MainWindow::fitGrowthField() {
             throw InputError("there are no rings to fit: run Rings > Detect Rings first (the folder " +
                              folder.string() + " has no X_arl*.png ring images either)");
         }
-        return QVariant::fromValue(
-            std::make_shared<const GrowthFitResult>(kerf::fitGrowthField(images, block, current, progress)));
+        return QVariant::fromValue(std::make_shared<const GrowthFitResult>(
+            kerf::fitGrowthField(images, block, current, photos, progress)));
       },
       [this](const QVariant& result) {
         fitJob_ = 0;

@@ -1,0 +1,98 @@
+// The shared growth-field fit pipeline (fit/growth_field_fit.hpp) on a small synthetic block: rendered
+// ring-localization images of a known pith axis, pith only and with the growth rates.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "field/growth_field.hpp"
+#include "fit/growth_field_fit.hpp"
+#include "params/parameter_schema.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+
+namespace {
+
+// As in test_pith_fit.cpp: I = ((cos(2 pi (g - offset)) + 1) / 2)^10 at pixel centres.
+GrayImage8 renderRingImage(const GrowthField& field, const Block& block, FaceId face, int px, float offset) {
+  GrayImage8 im;
+  im.width = im.height = px;
+  im.pixels.resize(static_cast<std::size_t>(px) * px);
+  for (int y = 0; y < px; ++y)
+    for (int x = 0; x < px; ++x) {
+      const double g = field.evaluate(block.pixelCenter(face, x, y, {px, px}));
+      const double i = std::pow((std::cos(2 * std::numbers::pi * (g - offset)) + 1) / 2, 10.0);
+      im.pixels[static_cast<std::size_t>(y) * px + x] = static_cast<std::uint8_t>(std::lround(255 * i));
+    }
+  return im;
+}
+
+struct Sample {
+  Block block;
+  PithAxis truth = PithAxis::fromAngles({8, 0, -45}, 6, 30);
+  GrowthFieldFitInput input;
+  Sample() {
+    const GrowthField field(truth, 3.0f, GrowthRates::uniform(block, truth));
+    for (FaceId f : kAllFaces) input.rings[faceIndex(f)] = renderRingImage(field, block, f, 192, 0.3f);
+  }
+};
+
+double angleDeg(glm::vec3 a, glm::vec3 b) {
+  return std::acos(std::min(1.0, std::abs(double(glm::dot(glm::normalize(a), glm::normalize(b)))))) * 180.0 /
+         std::numbers::pi;
+}
+
+bool hasLine(const std::vector<std::string>& lines, const std::string& start) {
+  return std::any_of(lines.begin(), lines.end(),
+                     [&](const std::string& l) { return l.rfind(start, 0) == 0; });
+}
+
+}  // namespace
+
+TEST(GrowthFieldFit, PithOnlyRecoversTheAxisAndRings) {
+  const Sample s;
+  GrowthFieldFitOptions options;
+  options.pithOnly = true;
+  const GrowthFieldFitResult fit = fitGrowthFieldToSample(s.input, s.block, WoodParameters{}, options);
+  EXPECT_FALSE(fit.rates);
+  const PithAxis axis =
+      PithAxis::fromAngles(fit.params.pithOrigin, fit.params.pithTilt, fit.params.pithAzimuth);
+  EXPECT_LT(angleDeg(axis.direction, s.truth.direction), 1.0);
+  EXPECT_NEAR(fit.params.ringWidth, 3.0, 0.1);
+  EXPECT_FALSE(fit.report.distortionsFitted);
+  EXPECT_FALSE(fit.report.anatomy);
+  for (int n : fit.report.contoursPerFace) EXPECT_GT(n, 0);
+  const auto lines = formatGrowthFieldFitReport(fit.report);
+  EXPECT_TRUE(hasLine(lines, "contours per face: A "));
+  EXPECT_TRUE(hasLine(lines, "pith: O = ("));
+  EXPECT_TRUE(hasLine(lines, "anatomy: no face photos"));
+  EXPECT_TRUE(hasLine(lines, "ambiguity (Mokume B.1): "));
+  EXPECT_TRUE(hasLine(lines, "distortions (Mokume Eq. 4-6) not fitted"));
+  EXPECT_TRUE(hasLine(lines, "time: contours "));
+}
+
+TEST(GrowthFieldFit, FitsRatesWithRingsAtWholeYears) {
+  const Sample s;
+  const GrowthFieldFitResult fit = fitGrowthFieldToSample(s.input, s.block, WoodParameters{});
+  ASSERT_TRUE(fit.rates);
+  EXPECT_NO_THROW(validate(fit.params));
+  EXPECT_EQ(fit.params.ringOffset, 0.0f);
+  EXPECT_TRUE(fit.report.distortionsFitted);
+  EXPECT_GT(fit.report.ringsAlongFitted, 2);
+  EXPECT_LT(fit.report.finalLossRings, 0.2);
+  EXPECT_NEAR(fit.report.ringWidthMm, fit.params.ringWidth, 1e-6);
+  EXPECT_TRUE(hasLine(formatGrowthFieldFitReport(fit.report), "distortions (Mokume Eq. 4): "));
+}
+
+TEST(GrowthFieldFit, RefusesTooFewContours) {
+  Sample s;
+  for (int i = 1; i < 6; ++i) s.input.rings[i] = {};  // face A only
+  GrowthFieldFitOptions options;
+  options.minContours = 4;
+  options.minFaces = 2;
+  EXPECT_THROW(fitGrowthFieldToSample(s.input, s.block, WoodParameters{}, options), InputError);
+  EXPECT_THROW(fitGrowthFieldToSample(GrowthFieldFitInput{}, s.block, WoodParameters{}), InputError);
+}
