@@ -1,5 +1,7 @@
 #include "field/growth_field.hpp"
 
+#include "field/bspline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -69,21 +71,6 @@ float GrowthField::radialValue(int ih, int ia, const RadialPosition& p) const {
   return node(ih, ia, p.cell) + p.t * (node(ih, ia, p.cell + 1) - node(ih, ia, p.cell));
 }
 
-namespace {
-
-// Uniform cubic B-spline weights: non-negative and summing to 1, so G stays monotone along the radius,
-// and C2 across spokes and height levels (trilinear weights leave a visible corner in the rings on
-// faces nearly tangent to them, at every spoke).
-void bsplineWeights(float t, float w[4]) {
-  const float s = 1.0f - t, t2 = t * t, t3 = t2 * t;
-  w[0] = s * s * s / 6.0f;
-  w[1] = (3.0f * t3 - 6.0f * t2 + 4.0f) / 6.0f;
-  w[2] = (-3.0f * t3 + 3.0f * t2 + 3.0f * t + 1.0f) / 6.0f;
-  w[3] = t3 / 6.0f;
-}
-
-}  // namespace
-
 float GrowthField::evaluate(const Cylindrical& c) const {
   // Height: clamped B-spline over the levels; constant beyond the first/last level.
   const int nh = rates_.heights, na = rates_.azimuths;
@@ -94,13 +81,13 @@ float GrowthField::evaluate(const Cylindrical& c) const {
   }
   const int ih = std::min(static_cast<int>(fh), nh - 1);
   float wh[4];
-  bsplineWeights(fh - ih, wh);
+  bsplineWeights<float>(fh - ih, wh);
   // Azimuth: n_a spokes evenly around the full circle, periodic B-spline.
   float fa = (c.azimuth + std::numbers::pi_v<float>)*(na / (2.0f * std::numbers::pi_v<float>));
   fa = std::clamp(fa, 0.0f, static_cast<float>(na));
   const int ia = static_cast<int>(fa);
   float wa[4];
-  bsplineWeights(fa - ia, wa);
+  bsplineWeights<float>(fa - ia, wa);
 
   // The four spokes around the point, wrapped around the circle (ia is in [0, na]).
   int spokes[4];

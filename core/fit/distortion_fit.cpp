@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 
+#include "field/bspline.hpp"
 #include "field/growth_field.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -14,15 +15,6 @@
 namespace kerf {
 
 namespace {
-
-// Uniform cubic B-spline weights, as GrowthField::evaluate.
-void bsplineWeights(double t, double w[4]) {
-  const double s = 1.0 - t, t2 = t * t, t3 = t2 * t;
-  w[0] = s * s * s / 6.0;
-  w[1] = (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0;
-  w[2] = (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0;
-  w[3] = t3 / 6.0;
-}
 
 // Coefficients grouped by column (ih * azimuths + ia): radii weights per column.
 std::map<int, std::vector<double>> columnCoefficients(const GrowthRates& g, const PithAxis& axis,
@@ -36,11 +28,11 @@ std::map<int, std::vector<double>> columnCoefficients(const GrowthRates& g, cons
   }
   const int ih = std::min(static_cast<int>(fh), nh - 1);
   double wh[4], wa[4];
-  bsplineWeights(fh - ih, wh);
+  bsplineWeights<double>(fh - ih, wh);
   float fa = (c.azimuth + std::numbers::pi_v<float>)*(na / (2.0f * std::numbers::pi_v<float>));
   fa = std::clamp(fa, 0.0f, static_cast<float>(na));
   const int ia = static_cast<int>(fa);
-  bsplineWeights(fa - ia, wa);
+  bsplineWeights<double>(fa - ia, wa);
 
   // Radial coefficients of one column (shared by all 16 columns: they depend on r only).
   std::vector<double> radial(nr, 0.0);
