@@ -15,25 +15,6 @@ namespace kerf::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// X_arl-unet.png first, else any X_arl*.png (sorted by name, so the choice is stable).
-fs::path findRingImage(const fs::path& folder, FaceId face) {
-  const std::string prefix = std::string(1, faceLetter(face)) + "_arl";
-  const fs::path preferred = folder / (prefix + "-unet.png");
-  if (fs::exists(preferred)) return preferred;
-  std::vector<fs::path> found;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && name.rfind(prefix, 0) == 0 && entry.path().extension() == ".png")
-      found.push_back(entry.path());
-  }
-  std::sort(found.begin(), found.end());
-  return found.empty() ? fs::path() : found.front();
-}
-
-}  // namespace
-
 Command addFitCommand(CLI::App& app) {
   auto* fit = app.add_subcommand("fit",
                                  "Fit the growth field (pith axis, ring width and phase) to a sample's "
@@ -70,7 +51,7 @@ Command addFitCommand(CLI::App& app) {
             GrowthFieldFitInput input;
             std::array<std::string, 6> files;
             for (FaceId face : kAllFaces) {
-              const fs::path file = findRingImage(folder, face);
+              const fs::path file = findRingLocalizationImage(folder, face);
               if (file.empty()) {
                 std::fprintf(stderr,
                              "kerf-cli: warning: face %c has no ring-localization image (%c_arl*.png); "

@@ -105,18 +105,7 @@ std::array<GrayImage8, 6> readFolderRingImages(const fs::path& folder) {
   std::array<GrayImage8, 6> images;
   if (folder.empty() || !fs::is_directory(folder)) return images;
   for (FaceId face : kAllFaces) {
-    const std::string prefix = std::string(1, faceLetter(face)) + "_arl";
-    fs::path chosen = folder / (prefix + "-unet.png");
-    if (!fs::exists(chosen)) {
-      std::vector<fs::path> found;
-      for (const auto& entry : fs::directory_iterator(folder)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.is_regular_file() && name.rfind(prefix, 0) == 0 && entry.path().extension() == ".png")
-          found.push_back(entry.path());
-      }
-      std::sort(found.begin(), found.end());
-      chosen = found.empty() ? fs::path() : found.front();
-    }
+    const fs::path chosen = findRingLocalizationImage(folder, face);
     if (!chosen.empty()) images[faceIndex(face)] = readRingLocalizationImage(chosen);
   }
   return images;

@@ -25,6 +25,20 @@ GrayImage8 readRingLocalizationImage(const std::filesystem::path& path) {
   return image;
 }
 
+std::filesystem::path findRingLocalizationImage(const std::filesystem::path& folder, FaceId face) {
+  const std::string prefix = std::string(1, faceLetter(face)) + "_arl";
+  const std::filesystem::path preferred = folder / (prefix + "-unet.png");
+  if (std::filesystem::exists(preferred)) return preferred;
+  std::vector<std::filesystem::path> found;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.rfind(prefix, 0) == 0 && entry.path().extension() == ".png")
+      found.push_back(entry.path());
+  }
+  std::sort(found.begin(), found.end());  // a stable choice
+  return found.empty() ? std::filesystem::path() : found.front();
+}
+
 std::vector<std::vector<glm::ivec2>> extractIsoContours(const GrayImage8& image,
                                                         const ContourExtractionOptions& options) {
   // One implementation of the authors' extraction: core/rings/contours (this keeps the fit's

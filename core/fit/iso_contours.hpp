@@ -14,6 +14,8 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
+#include "geometry/block.hpp"
+
 namespace kerf {
 
 // An 8-bit grey image, row-major, top row first.
@@ -27,6 +29,10 @@ struct GrayImage8 {
 // Reads a ring-localization image (e.g. Mokume's X_arl-unet.png) as the authors do: colour images
 // give their red channel (all channels are equal in Mokume's images). Throws InputError.
 GrayImage8 readRingLocalizationImage(const std::filesystem::path& path);
+
+// The ring-localization image of `face` in a sample folder: X_arl-unet.png (the Mokume authors')
+// first, else the first X_arl*.png by name (e.g. Kerf's own X_arl.png); empty when there is none.
+std::filesystem::path findRingLocalizationImage(const std::filesystem::path& folder, FaceId face);
 
 struct ContourExtractionOptions {
   int threshold = 200;     // a pixel is on a ring when its grey value is > threshold
