@@ -2,6 +2,8 @@
 // through rendered ring-localization images, and the real Mokume sample CN03 (skipped where absent).
 #include <gtest/gtest.h>
 
+#include "ring_image_fixture.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,23 +23,10 @@
 #include "util/resource_usage.hpp"
 
 using namespace kerf;
+using kerf::testing::renderRingImage;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A ring-localization image of one face: I = ((cos(2 pi (g - offset)) + 1) / 2)^10 at pixel centres.
-GrayImage8 renderRingImage(const GrowthField& field, const Block& block, FaceId face, int px, float offset) {
-  GrayImage8 im;
-  im.width = im.height = px;
-  im.pixels.resize(static_cast<std::size_t>(px) * px);
-  for (int y = 0; y < px; ++y)
-    for (int x = 0; x < px; ++x) {
-      const double g = field.evaluate(block.pixelCenter(face, x, y, {px, px}));
-      const double i = std::pow((std::cos(2 * std::numbers::pi * (g - offset)) + 1) / 2, 10.0);
-      im.pixels[static_cast<std::size_t>(y) * px + x] = static_cast<std::uint8_t>(std::lround(255 * i));
-    }
-  return im;
-}
 
 struct Synthetic {
   Block block;
