@@ -13,6 +13,7 @@ uniform vec3 u_axisBinormal;
 uniform sampler3D u_growthTable;  // R32F, size (radii + 1, azimuths, heights): G at every radial node
 uniform ivec3 u_gridSize;         // (heights, azimuths, radii)
 uniform vec4 u_gridRange;         // (heightMin, heightMax, radiusMin, radiusMax) in mm
+uniform vec2 u_azimuthRange;      // (azimuthMin, azimuthMax) radians: the full circle, or the block's part
 uniform uint u_hashSeed;              // WoodMaterial's seed, derived from model.seed on the CPU
 
 const float kPi = 3.14159265358979;
@@ -113,6 +114,9 @@ void bsplineWeights(float t, out vec4 w) {
   w = vec4(s * s * s, 3.0 * t3 - 6.0 * t2 + 4.0, -3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0, t3) / 6.0;
 }
 
+// core/field/growth_rates.cpp gridStencil(): heights and spokes blended with B-spline weights.
+float wrapTwoPi(float x) { return x - 2.0 * kPi * floor(x / (2.0 * kPi)); }
+
 float growthField(Cylindrical c) {
   int nh = u_gridSize.x, na = u_gridSize.y;
   float fh = 0.0;
@@ -120,14 +124,25 @@ float growthField(Cylindrical c) {
   int ih = min(int(fh), nh - 1);
   vec4 wh, wa;
   bsplineWeights(fh - float(ih), wh);
-  float fa = clamp((c.azimuth + kPi) * (float(na) / (2.0 * kPi)), 0.0, float(na));
-  int ia = int(fa);
-  bsplineWeights(fa - float(ia), wa);
+  ivec4 spokes;
+  if (u_azimuthRange.y - u_azimuthRange.x >= 2.0 * kPi - 1e-4) {
+    float fa = clamp(wrapTwoPi(c.azimuth - u_azimuthRange.x) * (float(na) / (2.0 * kPi)), 0.0, float(na));
+    int ia = int(fa);
+    bsplineWeights(fa - float(ia), wa);
+    for (int j = 0; j < 4; ++j) spokes[j] = (ia - 1 + j + na) % na;
+  } else {
+    float mid = 0.5 * (u_azimuthRange.x + u_azimuthRange.y), halfRange = 0.5 * (u_azimuthRange.y - u_azimuthRange.x);
+    float rel = wrapTwoPi(c.azimuth - mid + kPi) - kPi;
+    float fa = na > 1 ? clamp((rel + halfRange) / (2.0 * halfRange) * float(na - 1), 0.0, float(na - 1)) : 0.0;
+    int ia = min(int(fa), na - 1);
+    bsplineWeights(fa - float(ia), wa);
+    for (int j = 0; j < 4; ++j) spokes[j] = clamp(ia - 1 + j, 0, na - 1);
+  }
   float g = 0.0;
   for (int i = 0; i < 4; ++i) {
     int h = clamp(ih - 1 + i, 0, nh - 1);
     float row = 0.0;
-    for (int j = 0; j < 4; ++j) row += wa[j] * growthRadial(h, (ia - 1 + j + na) % na, c.radius);
+    for (int j = 0; j < 4; ++j) row += wa[j] * growthRadial(h, spokes[j], c.radius);
     g += wh[i] * row;
   }
   return g;

@@ -126,15 +126,18 @@ void FacesView::clear() {
 }
 
 void FacesView::setOverlayPolylines(const std::array<std::vector<QPolygonF>, 6>& polylines,
-                                    const std::array<QSize, 6>& imageSizes) {
+                                    const std::array<QSize, 6>& imageSizes,
+                                    const std::array<std::vector<QColor>, 6>& colors) {
   overlay_ = polylines;
   overlaySizes_ = imageSizes;
+  overlayColors_ = colors;
   update();
 }
 
 void FacesView::clearOverlay() {
   overlay_ = {};
   overlaySizes_ = {};
+  overlayColors_ = {};
   update();
 }
 
@@ -162,9 +165,14 @@ void FacesView::drawOverlay(QPainter& painter, const QRectF& target, FaceId face
   outline.setCosmetic(true);
   QPen line(QColor(255, 40, 200), 1.6);
   line.setCosmetic(true);
-  for (const QPen& pen : {outline, line}) {
-    painter.setPen(pen);
-    for (const QPolygonF& polyline : overlay_[i]) painter.drawPolyline(polyline);
+  const std::vector<QColor>& colors = overlayColors_[i];
+  for (const bool outlinePass : {true, false}) {
+    for (std::size_t k = 0; k < overlay_[i].size(); ++k) {
+      QPen pen = outlinePass ? outline : line;
+      if (!outlinePass && k < colors.size()) pen.setColor(colors[k]);
+      painter.setPen(pen);
+      painter.drawPolyline(overlay_[i][k]);
+    }
   }
   painter.restore();
 }
@@ -201,6 +209,11 @@ void FacesView::setDisplay(FaceDisplay display) {
 
 void FacesView::setBlendOpacity(double opacity) {
   blendOpacity_ = std::clamp(opacity, 0.0, 1.0);
+  update();
+}
+
+void FacesView::setForegroundPainter(std::function<void(QPainter&)> painter) {
+  foreground_ = std::move(painter);
   update();
 }
 
@@ -559,14 +572,20 @@ void FacesView::paintEvent(QPaintEvent*) {
         painter.setOpacity(1.0);
       }
     }
-    drawOverlay(painter, target, face);
     if (dropFace_ == face) {
       painter.setPen(QPen(QColor(90, 170, 255), 3));
       painter.setBrush(QColor(90, 170, 255, 50));
       painter.drawRect(target.adjusted(1.5, 1.5, -1.5, -1.5));
     }
-    drawLabel(painter, target, face, labelSide);
   }
+  if (foreground_) {
+    painter.save();
+    foreground_(painter);
+    painter.restore();
+  }
+  // Over the annotations: a fit's residual colours sit on the very traces they grade.
+  for (FaceId face : kAllFaces) drawOverlay(painter, faceRect(face), face);
+  for (FaceId face : kAllFaces) drawLabel(painter, faceRect(face), face, labelSide);  // letters on top
   drawCaption(painter);
 }
 

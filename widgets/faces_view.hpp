@@ -14,16 +14,20 @@
 // Drag and drop: an image file (png, jpg, tif) dropped onto a face -> photoDropped(face, path); several
 // images at once go to the faces their names start with ("A_col.png" -> A); a .kerf file or a folder
 // -> documentDropped(path).
+#include <QColor>
 #include <QImage>
 #include <QPolygonF>
 #include <QRectF>
 #include <QString>
 #include <QWidget>
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
 #include "geometry/block.hpp"
+
+class QPainter;
 
 namespace kerf {
 
@@ -62,13 +66,20 @@ class FacesView : public QWidget {
   // Polylines drawn over the faces (ring contours): per face A..F, in the pixel coordinates of an image
   // of imageSizes[face] pixels covering the whole face (continuous coordinates: a pixel's centre is at
   // (x + 0.5, y + 0.5)), so they line up with the photo whatever set is shown. Open polylines, drawn in
-  // a bright colour while overlayVisible().
+  // a bright colour while overlayVisible(), or each in its own colour (colors[face][i] for polyline i,
+  // e.g. a fit's residual per contour) where colors are given.
   void setOverlayPolylines(const std::array<std::vector<QPolygonF>, 6>& polylines,
-                           const std::array<QSize, 6>& imageSizes);
+                           const std::array<QSize, 6>& imageSizes,
+                           const std::array<std::vector<QColor>, 6>& colors = {});
+  const std::array<std::vector<QColor>, 6>& overlayColors() const { return overlayColors_; }
   void clearOverlay();
   bool hasOverlay() const;
   void setOverlayVisible(bool visible);
   bool overlayVisible() const { return overlayVisible_; }
+
+  // Drawn over the faces and their overlay, under the face letters, in widget coordinates (the annotation
+  // tools of widgets/annotation_layer.hpp draw the ring traces and knot marks this way).
+  void setForegroundPainter(std::function<void(QPainter&)> painter);
 
   // Shown centred while there are no faces ("Rendering faces…").
   void setPlaceholderText(const QString& text);
@@ -140,7 +151,9 @@ class FacesView : public QWidget {
   std::array<QImage, 6> photos_, renderings_;
   std::array<std::vector<QPolygonF>, 6> overlay_;
   std::array<QSize, 6> overlaySizes_;
+  std::array<std::vector<QColor>, 6> overlayColors_;
   bool overlayVisible_ = true;
+  std::function<void(QPainter&)> foreground_;
   Block block_;
   FaceDisplay display_ = FaceDisplay::Photos;
   double blendOpacity_ = 0.5;

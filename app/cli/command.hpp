@@ -33,5 +33,8 @@ Command addExportVolumeCommand(CLI::App& app);
 Command addParamsCommand(CLI::App& app);
 Command addDetectCommand(CLI::App& app);
 Command addFitCommand(CLI::App& app);
+Command addAnnotationsCommand(CLI::App& app);
+Command addRenderBoardCommand(CLI::App& app);
+Command addRectifyCommand(CLI::App& app);
 
 }  // namespace kerf::cli

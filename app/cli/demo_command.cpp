@@ -22,6 +22,8 @@ Command addDemoCommand(CLI::App& app) {
   demo->add_option("--seed", o->demo.seed, "Random seed of the demo wood");
   demo->add_option("--samples", o->demo.samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
   demo->add_flag("--no-photo-look", o->plain, "Write the plain rendering, without lighting and noise");
+  demo->add_flag("--numbered-traces", o->demo.numberedTraces,
+                 "Also write the true rings as numbered ring traces (A_ann.png .. F_ann.png, Mokume format)");
   return {demo, [o](Context& context) {
             o->demo.photoLook = !o->plain;
             const DemoFiles files = writeDemo(o->out, o->demo, context.progress());

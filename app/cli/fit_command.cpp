@@ -1,6 +1,8 @@
-// fit: infer the growth field from a sample's ring-localization images (Mokume Sec. 5.2: step 1, the
-// pith axis of an undeformed field and the ring width and phase along it; step 2, the growth rates R;
-// the pipeline is fitGrowthFieldToSample, fit/growth_field_fit.hpp) and write a project.
+// fit: infer the growth field from a sample's ring-localization images and/or the user's ring traces
+// (Mokume Sec. 5.2: step 1, the pith axis of an undeformed field and the ring width and phase along it;
+// step 2, the growth rates R with the grey map M; numbered traces pin the rings to their years as in the
+// learned-inference paper, Eq. 5; the pipeline is fitGrowthFieldToSample, fit/growth_field_fit.hpp) and
+// write a project.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -17,16 +19,21 @@ namespace fs = std::filesystem;
 
 Command addFitCommand(CLI::App& app) {
   auto* fit = app.add_subcommand("fit",
-                                 "Fit the growth field (pith axis, ring width and phase) to a sample's "
-                                 "ring-localization images (X_arl*.png)");
+                                 "Fit the growth field (pith axis, growth rates, rings) to a sample's "
+                                 "ring-localization images (X_arl*.png) and ring traces (X_ann.png, or a "
+                                 "project's traces)");
   struct Options {
     std::string sample, out, principal = "y";
     bool pithOnly = false;
     bool ignoreAnatomy = false;
+    bool ignoreTraces = false;
     double anatomyWeight = 1.0;
   };
   auto o = std::make_shared<Options>();
-  fit->add_option("SAMPLE", o->sample, "A Mokume-style sample folder with A_arl-unet.png .. F_arl-unet.png")
+  fit->add_option("SAMPLE", o->sample,
+                  "A Mokume-style sample folder (A_arl-unet.png .. F_arl-unet.png, numbered ring traces "
+                  "A_ann.png ..), or a project (.kerf) whose ring traces are fitted (ring images beside it "
+                  "are used too)")
       ->required();
   fit->add_option("--out", o->out, "The project file to write (.kerf)")->required();
   fit->add_option("--principal", o->principal,
@@ -36,27 +43,39 @@ Command addFitCommand(CLI::App& app) {
   fit->add_flag("--ignore-anatomy", o->ignoreAnatomy,
                 "Fit the pith to the ring contours alone; the fibre direction seen in the photos (X_col.png) "
                 "is still reported");
+  fit->add_flag("--ignore-traces", o->ignoreTraces,
+                "Fit the ring-localization images' contours only, not the sample's or project's ring traces");
   fit->add_option("--anatomy-weight", o->anatomyWeight,
                   "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
       ->check(CLI::Range(0.0, 100.0));
   return {fit, [o](Context& context) {
-            const fs::path folder = o->sample;
-            if (!fs::is_directory(folder)) throw InputError("not a sample folder: " + folder.string());
+            const fs::path sample = o->sample;
+            const bool isProject = fs::is_regular_file(sample);
+            if (!isProject && !fs::is_directory(sample))
+              throw InputError("not a sample folder or project file: " + sample.string());
+            const fs::path folder = isProject ? sample.parent_path() : sample;
             Project project;  // without photos, the ring images alone are enough to fit
-            try {
-              project = projectFromSampleFolder(folder);
-            } catch (const InputError&) {
+            if (isProject) {
+              project = loadProject(sample);
+            } else {
+              try {
+                project = projectFromSampleFolder(folder);
+              } catch (const InputError&) {
+              }
             }
 
             GrowthFieldFitInput input;
+            if (!o->ignoreTraces) input.traces = project.annotations.traces;
             std::array<std::string, 6> files;
             for (FaceId face : kAllFaces) {
               const fs::path file = findRingLocalizationImage(folder, face);
               if (file.empty()) {
-                std::fprintf(stderr,
-                             "kerf-cli: warning: face %c has no ring-localization image (%c_arl*.png); "
-                             "skipped\n",
-                             faceLetter(face), faceLetter(face));
+                // A sample traced by hand needs no ring images; otherwise say which face is skipped.
+                if (input.traces.empty())
+                  std::fprintf(stderr,
+                               "kerf-cli: warning: face %c has no ring-localization image (%c_arl*.png); "
+                               "skipped\n",
+                               faceLetter(face), faceLetter(face));
                 continue;
               }
               input.rings[faceIndex(face)] = readRingLocalizationImage(file);
@@ -64,8 +83,9 @@ Command addFitCommand(CLI::App& app) {
             }
             // Photos for the anatomical prior (fit/anatomy_prior.hpp).
             for (FaceId face : kAllFaces) {
-              const fs::path file = folder / (std::string(1, faceLetter(face)) + "_col.png");
-              if (fs::exists(file)) input.photos[faceIndex(face)] = readImage(file);
+              const fs::path file = isProject ? project.facePhotos[faceIndex(face)]
+                                              : folder / (std::string(1, faceLetter(face)) + "_col.png");
+              if (!file.empty() && fs::exists(file)) input.photos[faceIndex(face)] = readImage(file);
             }
             GrowthFieldFitOptions options;
             options.principal = o->principal == "x"   ? glm::vec3(1, 0, 0)

@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
   const std::vector<cli::Command> commands = {
       cli::addDemoCommand(app),         cli::addRenderFacesCommand(app), cli::addRenderCutCommand(app),
       cli::addExportVolumeCommand(app), cli::addParamsCommand(app),      cli::addDetectCommand(app),
-      cli::addFitCommand(app),
+      cli::addFitCommand(app),          cli::addAnnotationsCommand(app), cli::addRectifyCommand(app),
+      cli::addRenderBoardCommand(app),
   };
 
   try {

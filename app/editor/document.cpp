@@ -28,6 +28,7 @@ void Document::reset(const Project& project, const QString& path, const QString&
   emit modelChanged();
   emit cutPlaneChanged();
   emit photosChanged();
+  emit annotationsChanged();
   emit modifiedChanged(false);
 }
 
@@ -75,6 +76,20 @@ void Document::replacePhoto(FaceId face, const QString& path, const QImage& imag
                                      photos_[i], path, image));
 }
 
+void Document::replaceBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
+                                     const std::array<QImage, 6>& images, const QString& undoText) {
+  const Block checked(block.size());  // InputError unless every side is finite and positive
+  std::array<QString, 6> beforePaths;
+  for (int i = 0; i < 6; ++i) beforePaths[i] = QString::fromStdString(project_.facePhotos[i].string());
+  undo_.push(new SetBlockAndPhotosCommand(this, project_.block, beforePaths, photos_, checked, paths, images,
+                                          undoText));
+}
+
+void Document::editAnnotations(const Annotations& after, const QString& undoText) {
+  if (after == project_.annotations) return;
+  undo_.push(new SetAnnotationsCommand(this, project_.annotations, after, undoText));
+}
+
 void Document::setCutEnabled(bool enabled) {
   if (project_.cutEnabled == enabled) return;
   project_.cutEnabled = enabled;
@@ -118,6 +133,25 @@ void Document::applyPhoto(FaceId face, const QString& path, const QImage& image)
   project_.facePhotos[faceIndex(face)] = path.toStdString();
   photos_[faceIndex(face)] = image;
   emit photosChanged();
+}
+
+void Document::applyBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
+                                   const std::array<QImage, 6>& images) {
+  const bool resized = block.size() != project_.block.size();
+  project_.block = block;
+  for (int i = 0; i < 6; ++i) project_.facePhotos[i] = paths[i].toStdString();
+  photos_ = images;
+  if (resized) {
+    rebuildModel();
+    emit blockChanged();
+    emit modelChanged();
+  }
+  emit photosChanged();
+}
+
+void Document::applyAnnotations(const Annotations& annotations) {
+  project_.annotations = annotations;
+  emit annotationsChanged();
 }
 
 void Document::saveAs(const QString& path) {

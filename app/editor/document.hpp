@@ -39,6 +39,8 @@ class Document : public QObject {
   QUndoStack* undoStack() { return &undo_; }
   CutPlaneSetting cutPlane() const { return project_.cutPlane.value_or(CutPlaneSetting{}); }
   bool cutEnabled() const { return project_.cutEnabled; }
+  // The ring traces and knot marks (face mm), saved with the project.
+  const Annotations& annotations() const { return project_.annotations; }
 
   // Edits. Each pushes an undo command; unfinished edits of the same thing (a slider or a plane being
   // dragged) merge into one step, closed by the edit with finished = true.
@@ -51,6 +53,12 @@ class Document : public QObject {
                         const QString& undoText);
   void editCutPlane(const CutPlaneSetting& setting, bool finished);
   void replacePhoto(FaceId face, const QString& path, const QImage& image);
+  // The block's size and all six face photos together, as one undo step (File > Import Photos): a null
+  // image and empty path leave a face without a photo. Throws InputError for a bad size (nothing pushed).
+  void replaceBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
+                             const std::array<QImage, 6>& images, const QString& undoText);
+  // Replaces the annotations as one undo step (nothing is pushed when they are unchanged).
+  void editAnnotations(const Annotations& after, const QString& undoText);
   // The cut's visibility is a view setting: saved with the project, but not an undo step.
   void setCutEnabled(bool enabled);
   // Marks the document as holding unsaved work (recovered from an autosave).
@@ -68,11 +76,16 @@ class Document : public QObject {
   void applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates);
   void applyCutPlane(const CutPlaneSetting& setting);
   void applyPhoto(FaceId face, const QString& path, const QImage& image);
+  void applyAnnotations(const Annotations& annotations);
+  void applyBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
+                           const std::array<QImage, 6>& images);
 
  signals:
   void modelChanged();     // parameters or growth rates changed: model() is new
   void cutPlaneChanged();  // setting or visibility
+  void annotationsChanged();
   void photosChanged();
+  void blockChanged();   // the block's size (the model changes with it: modelChanged follows)
   void documentReset();  // a different document (or file) is now open
   void modifiedChanged(bool modified);
 

@@ -86,6 +86,19 @@ bool SetCutPlaneCommand::mergeWith(const QUndoCommand* other) {
   return true;
 }
 
+SetAnnotationsCommand::SetAnnotationsCommand(Document* document, Annotations before, Annotations after,
+                                             const QString& text)
+    : document_(document), before_(std::move(before)), after_(std::move(after)) {
+  setText(text);
+}
+
+void SetAnnotationsCommand::undo() {
+  document_->applyAnnotations(before_);
+}
+void SetAnnotationsCommand::redo() {
+  document_->applyAnnotations(after_);
+}
+
 ReplacePhotoCommand::ReplacePhotoCommand(Document* document, FaceId face, QString beforePath,
                                          QImage beforeImage, QString afterPath, QImage afterImage)
     : document_(document),
@@ -102,6 +115,28 @@ void ReplacePhotoCommand::undo() {
 }
 void ReplacePhotoCommand::redo() {
   document_->applyPhoto(face_, afterPath_, afterImage_);
+}
+
+SetBlockAndPhotosCommand::SetBlockAndPhotosCommand(Document* document, const Block& beforeBlock,
+                                                   std::array<QString, 6> beforePaths,
+                                                   std::array<QImage, 6> beforeImages,
+                                                   const Block& afterBlock, std::array<QString, 6> afterPaths,
+                                                   std::array<QImage, 6> afterImages, const QString& text)
+    : document_(document),
+      beforeBlock_(beforeBlock),
+      afterBlock_(afterBlock),
+      beforePaths_(std::move(beforePaths)),
+      afterPaths_(std::move(afterPaths)),
+      beforeImages_(std::move(beforeImages)),
+      afterImages_(std::move(afterImages)) {
+  setText(text);
+}
+
+void SetBlockAndPhotosCommand::undo() {
+  document_->applyBlockAndPhotos(beforeBlock_, beforePaths_, beforeImages_);
+}
+void SetBlockAndPhotosCommand::redo() {
+  document_->applyBlockAndPhotos(afterBlock_, afterPaths_, afterImages_);
 }
 
 }  // namespace kerf

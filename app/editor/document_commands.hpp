@@ -12,6 +12,7 @@
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
 #include "params/parameter_schema.hpp"
+#include "rings/annotations.hpp"
 
 namespace kerf {
 
@@ -77,6 +78,18 @@ class SetCutPlaneCommand : public QUndoCommand {
   bool finished_;
 };
 
+// The annotations (ring traces, knot marks) before and after one edit of them.
+class SetAnnotationsCommand : public QUndoCommand {
+ public:
+  SetAnnotationsCommand(Document* document, Annotations before, Annotations after, const QString& text);
+  void undo() override;
+  void redo() override;
+
+ private:
+  Document* document_;
+  Annotations before_, after_;
+};
+
 class ReplacePhotoCommand : public QUndoCommand {
  public:
   ReplacePhotoCommand(Document* document, FaceId face, QString beforePath, QImage beforeImage,
@@ -89,6 +102,23 @@ class ReplacePhotoCommand : public QUndoCommand {
   FaceId face_;
   QString beforePath_, afterPath_;
   QImage beforeImage_, afterImage_;
+};
+
+// The block's size and the six face photos together (File > Import Photos).
+class SetBlockAndPhotosCommand : public QUndoCommand {
+ public:
+  SetBlockAndPhotosCommand(Document* document, const Block& beforeBlock, std::array<QString, 6> beforePaths,
+                           std::array<QImage, 6> beforeImages, const Block& afterBlock,
+                           std::array<QString, 6> afterPaths, std::array<QImage, 6> afterImages,
+                           const QString& text);
+  void undo() override;
+  void redo() override;
+
+ private:
+  Document* document_;
+  Block beforeBlock_, afterBlock_;
+  std::array<QString, 6> beforePaths_, afterPaths_;
+  std::array<QImage, 6> beforeImages_, afterImages_;
 };
 
 }  // namespace kerf

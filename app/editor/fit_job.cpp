@@ -26,26 +26,6 @@ Image fromQImage(const QImage& photo) {
   return image;
 }
 
-GrayImage8 toGray8(const Image& arl) {
-  GrayImage8 gray;
-  gray.width = arl.width;
-  gray.height = arl.height;
-  gray.pixels.resize(static_cast<std::size_t>(arl.width) * arl.height);
-  for (int y = 0; y < arl.height; ++y)
-    for (int x = 0; x < arl.width; ++x)
-      gray.pixels[static_cast<std::size_t>(y) * arl.width + x] =
-          static_cast<std::uint8_t>(std::lround(std::clamp(arl.pixel(x, y)[0], 0.0f, 1.0f) * 255.0f));
-  return gray;
-}
-
-// A part [from, to] of a job's progress.
-Progress part(const Progress& progress, double from, double to) {
-  Progress sub{nullptr, progress.stop};
-  if (progress.report)
-    sub.report = [report = progress.report, from, to](double f) { report(from + (to - from) * f); };
-  return sub;
-}
-
 }  // namespace
 
 int RingDetection::contourCount() const {
@@ -71,7 +51,7 @@ RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& bloc
     const float pxPerMm = 0.5f * (photos[i].width() / frame.widthMm + photos[i].height() / frame.heightMm);
     const Image arl =
         detector.localize(fromQImage(photos[i]), pxPerMm,
-                          part(progress, double(done) / withPhoto, double(done + 1) / withPhoto));
+                          progress.part(double(done) / withPhoto, double(done + 1) / withPhoto));
     progress.throwIfCancelled();
     for (const FaceContour& contour : extractContours(arl, face))
       detection.contours[i].push_back(contour.pixels);
@@ -113,13 +93,24 @@ std::array<GrayImage8, 6> readFolderRingImages(const fs::path& folder) {
 
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos,
-                               const Progress& progress) {
-  GrowthFieldFitInput input{images, {}};
+                               const Progress& progress, const std::vector<RingTrace>& traces,
+                               const GrowthFitPreview& preview) {
+  GrowthFieldFitInput input{images, {}, traces};
+  // Detected contours became the document's traces (corrected by the user): the images then only place
+  // the rings and give the image term.
+  input.contoursFromImages = traces.empty();
   for (int i = 0; i < 6; ++i)
     if (!photos[i].isNull()) input.photos[i] = fromQImage(photos[i]);
   GrowthFieldFitOptions options;
   options.minContours = kMinFitContours;
   options.minFaces = 2;
+  if (preview)
+    options.preview = [&](const WoodParameters& params, const std::optional<GrowthRates>& rates) {
+      preview(params,
+              rates ? *rates
+                    : GrowthRates::uniform(block, PithAxis::fromAngles(params.pithOrigin, params.pithTilt,
+                                                                       params.pithAzimuth)));
+    };
   const GrowthFieldFitResult fit = fitGrowthFieldToSample(input, block, current, options, progress);
   GrowthFitResult out;
   out.params = fit.params;
@@ -128,6 +119,14 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
     out.report << QString::fromStdString(line);
   out.ambiguous = fit.report.pith.ambiguous;
   out.lossRings = fit.report.finalLossRings;
+  for (const ContourResidual& c : fit.contours) {
+    FittedContour f{c.face, {}, c.residualRings};
+    for (const glm::vec3& p : c.points) f.pointsMm.push_back(blockToFaceMm(block, c.face, p));
+    out.contours.push_back(std::move(f));
+  }
+  if (fit.alternative && fit.alternative->rates)
+    out.alternative = GrowthFitResult::Alternative{fit.alternative->params, *fit.alternative->rates,
+                                                   fit.alternative->finalLossRings};
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <QStringList>
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <glm/vec2.hpp>
 #include <optional>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "fit/iso_contours.hpp"
 #include "geometry/block.hpp"
 #include "params/parameter_schema.hpp"
+#include "rings/annotations.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {
@@ -47,20 +49,41 @@ std::array<QSize, 6> detectionSizes(const RingDetection& detection);
 // name), as `kerf-cli fit` reads them; faces without one are empty.
 std::array<GrayImage8, 6> readFolderRingImages(const std::filesystem::path& folder);
 
+// One fitted contour, for the residual overlay: face mm points (rings/annotations.hpp) and how far
+// they stray from their ring, in ring spacings.
+struct FittedContour {
+  FaceId face = FaceId::A;
+  std::vector<glm::vec2> pointsMm;
+  double residualRings = 0;
+};
+
 struct GrowthFitResult {
   WoodParameters params;  // the input parameters with growth.pith_*, ring_width, ring_offset replaced
   GrowthRates rates;
   QStringList report;  // lines for the log: contours, loss, O, V, ambiguity, timings
   bool ambiguous = false;
   double lossRings = 0;  // final iso-contour loss of the saved field, in ring spacings
+  std::vector<FittedContour> contours;
+  // The field around the mirrored pith, when the pith side was ambiguous and it could be fitted.
+  struct Alternative {
+    WoodParameters params;
+    GrowthRates rates;
+    double lossRings = 0;
+  };
+  std::optional<Alternative> alternative;
 };
 
-// The growth-field fit of `kerf-cli fit` on the given ring-localization images, with the anatomical prior
-// from the face photos where there are any (null images: none). Throws InputError when there are too
-// few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled on request.
+// A field for the live preview while the fit runs (called from the fitting thread).
+using GrowthFitPreview = std::function<void(const WoodParameters&, const GrowthRates&)>;
+
+// The growth-field fit of `kerf-cli fit` on the given ring-localization images and ring traces, with the
+// anatomical prior from the face photos where there are any (null images: none). Throws InputError when
+// there are too few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled
+// on request.
 inline constexpr int kMinFitContours = 4;
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos = {},
-                               const Progress& progress = {});
+                               const Progress& progress = {}, const std::vector<RingTrace>& traces = {},
+                               const GrowthFitPreview& preview = {});
 
 }  // namespace kerf

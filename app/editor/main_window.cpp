@@ -114,6 +114,7 @@ void MainWindow::createViews() {
   facesLayout->setContentsMargins(0, 0, 0, 0);
   facesLayout->setSpacing(0);
   facesLayout->addWidget(facesBar);
+  facesLayout->addWidget(createAnnotationBar(facesPane));
   facesLayout->addWidget(facesView_, 1);
 
   auto* splitter = new QSplitter(Qt::Horizontal, this);
@@ -243,6 +244,10 @@ void MainWindow::connectDocument() {
     updateTitle();
   });
   connect(document_, &Document::modifiedChanged, this, [this](bool) { updateTitle(); });
+  connect(document_, &Document::blockChanged, this, [this] {
+    facesView_->setBlock(document_->project().block);
+    cutControls_->setBlock(document_->project().block);
+  });
 }
 
 bool MainWindow::isBusy() const {
@@ -270,7 +275,10 @@ void MainWindow::modelChanged() {
 // A newer edit cancels the running render, so a slider drag keeps showing fresh previews.
 void MainWindow::renderFaces() {
   if (!hasDocument_) return;
-  const auto model = document_->model();
+  renderFacesOf(document_->model());
+}
+
+void MainWindow::renderFacesOf(std::shared_ptr<const WoodModel> model) {
   const RenderSettings settings = settings_;
   if (renderJob_ && jobs_->isRunning(renderJob_)) jobs_->cancel(renderJob_);
   renderJob_ = jobs_->start(

@@ -14,10 +14,12 @@ class QAction;
 class QActionGroup;
 class QLabel;
 class QSlider;
+class QToolBar;
 class QUndoView;
 
 namespace kerf {
 
+class AnnotationLayer;
 class Autosave;
 class CutPlaneControls;
 class CutView;
@@ -79,11 +81,24 @@ class MainWindow : public QMainWindow {
   // applies it as one undo step.
   void detectRings();
   void fitGrowthField();
+  // File > Import Photos (main_window_import.cpp): the dialog on `files` (a file chooser first when
+  // empty), then the faces written in the background and applied as one undo step (photosImported()).
+  void importPhotos(const QStringList& files = {});
+  QAction* importPhotosAction() const { return importPhotosAction_; }
   // Null before a detection, and after the photos change.
   std::shared_ptr<const RingDetection> ringDetection() const { return ringDetection_; }
   QAction* detectRingsAction() const { return detectRingsAction_; }
   QAction* fitGrowthAction() const { return fitGrowthAction_; }
+  // After an ambiguous fit (Mokume B.1): swaps the field for the one around the other pith candidate.
+  QAction* otherPithAction() const { return otherPithAction_; }
+  QAction* showResidualsAction() const { return showResidualsAction_; }
   QAction* showContoursAction() const { return showContoursAction_; }
+  // Ring tracing (main_window_annotations.cpp): the tools over the faces view; detected contours become
+  // the document's Detected traces (one undo step); the annotations export as Mokume images into
+  // `folder` (asked for when empty). Returns false (with a message) when nothing was written.
+  AnnotationLayer* annotationLayer() const { return annotationLayer_; }
+  bool exportAnnotations(QString folder = {});
+  QAction* exportAnnotationsAction() const { return exportAnnotationsAction_; }
 
  signals:
   // The document has loaded and its faces have rendered (at full resolution).
@@ -97,8 +112,11 @@ class MainWindow : public QMainWindow {
   // Detect Rings / Fit Growth Field finished and their result is shown / applied.
   void ringsDetected();
   void growthFieldFitted();
+  // The fit's live preview (the undeformed field after the pith stage, then the result) is on screen.
+  void fitPreviewed();
   // Either of them failed (the message is also in the log and a message box) or was cancelled.
   void ringJobFailed(const QString& message);
+  void photosImported();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -108,7 +126,10 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createMenus();
   void createRingsMenu();
+  QAction* createImportAction();  // main_window_import.cpp
   void clearRingDetection();
+  QToolBar* createAnnotationBar(QWidget* parent);
+  void applyDetectedTraces(const RingDetection& detection);
   void ringJobEnded(int id, const QString& message);
   void connectDocument();
   void restoreLayout();
@@ -121,6 +142,10 @@ class MainWindow : public QMainWindow {
 
   void modelChanged();
   void renderFaces();
+  void renderFacesOf(std::shared_ptr<const WoodModel> model);
+  void showFitPreview(const WoodParameters& params, const GrowthRates& rates);
+  void showFitResiduals(const GrowthFitResult& fit);
+  void useOtherPithCandidate();
   void updateFacesView();
   void setFaceDisplay(int display);
   void toggleView();
@@ -149,6 +174,7 @@ class MainWindow : public QMainWindow {
   bool displayChosenByUser_ = false;
   int renderJob_ = 0;
   int ringJob_ = 0, fitJob_ = 0;
+  int importJob_ = 0;
   std::shared_ptr<const RingDetection> ringDetection_;
 
   FacesView* facesView_ = nullptr;
@@ -168,7 +194,13 @@ class MainWindow : public QMainWindow {
   QAction* showPhotosOn3dAction_ = nullptr;
   QAction* detectRingsAction_ = nullptr;
   QAction* fitGrowthAction_ = nullptr;
+  QAction* otherPithAction_ = nullptr;
+  QAction* showResidualsAction_ = nullptr;
+  std::shared_ptr<const GrowthFitResult> lastFit_;  // for the other pith candidate
   QAction* showContoursAction_ = nullptr;
+  AnnotationLayer* annotationLayer_ = nullptr;
+  QAction* exportAnnotationsAction_ = nullptr;
+  QAction* importPhotosAction_ = nullptr;
 };
 
 }  // namespace kerf

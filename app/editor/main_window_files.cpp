@@ -48,6 +48,7 @@ void MainWindow::createMenus() {
   QAction* open = file->addAction(tr("&Open Project or Sample Folder…"), this, &MainWindow::chooseDocument);
   open->setShortcut(QKeySequence::Open);
   recent_ = new RecentFiles(file->addMenu(tr("Open &Recent")), this);
+  file->addAction(createImportAction());
   connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
     if (maybeSave()) openDocument(path);
   });
@@ -86,13 +87,13 @@ void MainWindow::createMenus() {
       tr("Project the face photos onto the 3D block to compare them with the model"));
   connect(showPhotosOn3dAction_, &QAction::toggled, viewport_, &Viewport3D::setShowPhotos);
   view->addAction(tr("Reset 3D &Camera"), viewport_, &Viewport3D::resetCamera)->setShortcut(Qt::Key_Home);
-  showContoursAction_ = view->addAction(tr("Show Ring &Contours"));
+  showContoursAction_ = view->addAction(tr("Show Ring &Traces"));
   showContoursAction_->setCheckable(true);
   showContoursAction_->setChecked(true);
   showContoursAction_->setEnabled(false);
   showContoursAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
   showContoursAction_->setToolTip(
-      tr("Draw the detected ring contours over the faces (Rings ▸ Detect Rings)"));
+      tr("Draw the ring traces (detected and your own) and knot marks over the faces"));
   connect(showContoursAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());

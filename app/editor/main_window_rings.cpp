@@ -1,17 +1,24 @@
 // MainWindow: the Rings menu (ring detection on the face photos, growth-field fit).
 #include <QAction>
+#include <QColor>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPolygonF>
 #include <algorithm>
 #include <filesystem>
 
+#include <cmath>
+#include "annotation_layer.hpp"
+#include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
+#include "render/wood_model.hpp"
 #include "util/error.hpp"
+#include "viewport3d.hpp"
 
 namespace kerf {
 
@@ -21,15 +28,38 @@ void MainWindow::createRingsMenu() {
   detectRingsAction_ = rings->addAction(tr("&Detect Rings"), this, &MainWindow::detectRings);
   detectRingsAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
   detectRingsAction_->setToolTip(
-      tr("Find the annual rings on every face photo (classical detector) and draw their contours over the "
-         "faces; runs in the background (Esc cancels)"));
+      tr("Find the annual rings on every face photo (classical detector) and add them as ring traces you can "
+         "correct (they replace the previously detected ones; your own traces stay); runs in the background "
+         "(Esc cancels)"));
   fitGrowthAction_ = rings->addAction(tr("&Fit Growth Field"), this, &MainWindow::fitGrowthField);
   fitGrowthAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
   fitGrowthAction_->setToolTip(
-      tr("Fit the pith axis, ring width and growth rates to the detected rings (or to the sample "
-         "folder's X_arl*.png when none were detected), as kerf-cli fit does; one undo step"));
+      tr("Fit the pith axis, ring width, growth rates and wood colours to your ring traces (detected and "
+         "corrected, numbered ones keep their years) and the ring images, as kerf-cli fit does; the faces "
+         "and the 3D view follow the fit live; one undo step"));
+  otherPithAction_ =
+      rings->addAction(tr("Use &Other Pith Candidate"), this, &MainWindow::useOtherPithCandidate);
+  otherPithAction_->setEnabled(false);
+  otherPithAction_->setToolTip(
+      tr("When the rings on the faces are nearly parallel, the pith could lie on either side of the block "
+         "(Mokume B.1): switch to the field fitted around the other side (one undo step; again to switch "
+         "back)"));
+  showResidualsAction_ = rings->addAction(tr("Show Fit &Residuals"));
+  showResidualsAction_->setCheckable(true);
+  showResidualsAction_->setChecked(true);
+  showResidualsAction_->setEnabled(false);
+  showResidualsAction_->setToolTip(
+      tr("Colour every fitted ring line by how well the fitted rings follow it: green within 3 % of a ring "
+         "width, yellow about 10 %, red 20 % or more (a wrong or broken trace)"));
+  connect(showResidualsAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
   rings->addSeparator();
   rings->addAction(showContoursAction_);
+  rings->addAction(exportAnnotationsAction_);
+  QMenu* tracing = rings->addMenu(tr("&Tracing Tools"));  // the faces view's tool bar, with their keys
+  tracing->setToolTipsVisible(true);
+  tracing->addActions(annotationLayer_->toolActions());
+  tracing->addSeparator();
+  tracing->addActions(annotationLayer_->editActions());
   connect(jobs_, &JobRunner::jobFailed, this, &MainWindow::ringJobEnded);
   connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { ringJobEnded(id, {}); });
 }
@@ -38,7 +68,7 @@ void MainWindow::clearRingDetection() {
   if (ringJob_ && jobs_->isRunning(ringJob_)) jobs_->cancel(ringJob_);
   ringDetection_.reset();
   facesView_->clearOverlay();
-  if (showContoursAction_) showContoursAction_->setEnabled(false);
+  if (showContoursAction_) showContoursAction_->setEnabled(!document_->annotations().empty());
 }
 
 void MainWindow::ringJobEnded(int id, const QString& message) {
@@ -79,7 +109,7 @@ void MainWindow::detectRings() {
       [this](const QVariant& result) {
         ringJob_ = 0;
         ringDetection_ = result.value<std::shared_ptr<const RingDetection>>();
-        facesView_->setOverlayPolylines(contourPolylines(*ringDetection_), detectionSizes(*ringDetection_));
+        applyDetectedTraces(*ringDetection_);  // editable traces of the document: one undo step
         showContoursAction_->setEnabled(true);
         facesView_->setOverlayVisible(showContoursAction_->isChecked());
         QStringList counts;
@@ -113,39 +143,48 @@ void MainWindow::fitGrowthField() {
     emit ringJobFailed(lastError_);
     return;
   }
-  // The detected images, else the sample folder's own ring-localization images (read in the job).
+  // The detected images, else the sample folder's own ring-localization images (read in the job); the
+  // document's ring traces (detected, corrected, drawn) are the contours when there are any.
   const std::shared_ptr<const RingDetection> detection = ringDetection_;
+  const std::vector<RingTrace> traces = document_->annotations().traces;
   std::filesystem::path folder;
   if (!document_->filePath().isEmpty())
     folder = QFileInfo(document_->filePath()).absolutePath().toStdString();
   for (const auto& photo : document_->project().facePhotos)
     if (folder.empty() && !photo.empty()) folder = photo.parent_path();
-  if (!detection && folder.empty()) {
-    showError(tr("There are no rings to fit: run Rings ▸ Detect Rings on the face photos first."));
+  if (!detection && folder.empty() && traces.empty()) {
+    showError(
+        tr("There are no rings to fit: run Rings ▸ Detect Rings on the face photos, or trace rings, first."));
     emit ringJobFailed(lastError_);
     return;
   }
   const Block block = document_->project().block;
   const WoodParameters current = document_->project().params;
-  const std::array<QImage, 6> photos = document_->photos();  // for the anatomical prior
-  logMessage("info", detection ? tr("Fitting the growth field to the detected rings")
-                               : tr("Fitting the growth field to the ring images in %1")
-                                     .arg(QString::fromStdString(folder.string())));
+  const std::array<QImage, 6> photos = document_->photos();  // for the anatomical prior and the colours
+  logMessage("info", !traces.empty() ? tr("Fitting the growth field to %1 ring traces").arg(traces.size())
+                     : detection     ? tr("Fitting the growth field to the detected rings")
+                                     : tr("Fitting the growth field to the ring images in %1")
+                                       .arg(QString::fromStdString(folder.string())));
   fitJob_ = jobs_->start(
       tr("Fitting growth field"),
-      [detection, folder, block, current, photos](const Progress& progress,
-                                                  const JobRunner::Preview&) -> QVariant {
+      [detection, folder, block, current, photos, traces](const Progress& progress,
+                                                          const JobRunner::Preview& preview) -> QVariant {
         std::array<GrayImage8, 6> images;
         if (detection) {
           images = detection->arl;
         } else {
           images = readFolderRingImages(folder);
-          if (std::all_of(images.begin(), images.end(), [](const GrayImage8& i) { return i.empty(); }))
+          if (traces.empty() &&
+              std::all_of(images.begin(), images.end(), [](const GrayImage8& i) { return i.empty(); }))
             throw InputError("there are no rings to fit: run Rings > Detect Rings first (the folder " +
                              folder.string() + " has no X_arl*.png ring images either)");
         }
+        const GrowthFitPreview live = [&preview](const WoodParameters& params, const GrowthRates& rates) {
+          preview(QVariant::fromValue(
+              std::make_shared<const std::pair<WoodParameters, GrowthRates>>(params, rates)));
+        };
         return QVariant::fromValue(std::make_shared<const GrowthFitResult>(
-            kerf::fitGrowthField(images, block, current, photos, progress)));
+            kerf::fitGrowthField(images, block, current, photos, progress, traces, live)));
       },
       [this](const QVariant& result) {
         fitJob_ = 0;
@@ -156,16 +195,92 @@ void MainWindow::fitGrowthField() {
           document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"));
         } catch (const InputError& e) {
           showError(tr("The fitted growth field is not valid: %1").arg(QString::fromUtf8(e.what())));
+          modelChanged();  // back from the preview to the document's field
           emit ringJobFailed(lastError_);
           return;
         }
-        logMessage(fit->ambiguous ? "warning" : "info",
-                   tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
-                       .arg(fit->lossRings, 0, 'f', 4)
-                       .arg(fit->ambiguous ? tr("; the pith side is ambiguous") : QString()));
+        lastFit_ = fit;
+        otherPithAction_->setEnabled(fit->alternative.has_value());
+        showFitResiduals(*fit);
+        logMessage(
+            fit->ambiguous ? "warning" : "info",
+            tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
+                .arg(fit->lossRings, 0, 'f', 4)
+                .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
+                                                             "Other Pith Candidate shows the other side")
+                                                        : tr("; the pith side is ambiguous"))
+                                    : QString()));
         emit growthFieldFitted();
       },
-      {}, false);
+      [this](const QVariant& preview) {
+        const auto field = preview.value<std::shared_ptr<const std::pair<WoodParameters, GrowthRates>>>();
+        if (field) showFitPreview(field->first, field->second);
+      },
+      false);
+}
+
+// The field being fitted, shown in the 3D view, the cut and the faces before it is applied.
+void MainWindow::showFitPreview(const WoodParameters& params, const GrowthRates& rates) {
+  std::shared_ptr<const WoodModel> model;
+  try {
+    model = std::make_shared<const WoodModel>(document_->project().block, params, rates);
+  } catch (const InputError&) {
+    return;  // e.g. a pith candidate outside the ranges: nothing to preview
+  }
+  viewport_->setModel(model);
+  cutView_->setModel(model);
+  renderFacesOf(model);
+  emit fitPreviewed();
+}
+
+// Every fitted contour over the photos, coloured by its residual (ring spacings).
+void MainWindow::showFitResiduals(const GrowthFitResult& fit) {
+  const Block& block = document_->project().block;
+  std::array<std::vector<QPolygonF>, 6> lines;
+  std::array<std::vector<QColor>, 6> colours;
+  std::array<QSize, 6> sizes;
+  for (FaceId face : kAllFaces) {
+    const glm::vec2 mm = faceSizeMm(block, face);
+    sizes[faceIndex(face)] =
+        QSize(std::max(1, int(std::lround(mm.x * 10))), std::max(1, int(std::lround(mm.y * 10))));
+  }
+  for (const FittedContour& c : fit.contours) {
+    const int f = faceIndex(c.face);
+    const glm::ivec2 size(sizes[f].width(), sizes[f].height());
+    QPolygonF line;
+    for (const glm::vec2& p : c.pointsMm) {
+      const glm::vec2 q = faceMmToImage(block, c.face, p, size);
+      line << QPointF(q.x, q.y);
+    }
+    lines[f].push_back(line);
+    // Green (0) -> yellow (0.1 ring) -> red (0.2 ring and more).
+    const double t = std::clamp(c.residualRings / 0.2, 0.0, 1.0);
+    colours[f].push_back(t < 0.5 ? QColor::fromRgbF(float(2 * t), 0.85f, 0.2f)
+                                 : QColor::fromRgbF(1.0f, float(0.85 * (2 - 2 * t)), 0.2f));
+  }
+  facesView_->setOverlayPolylines(lines, sizes, colours);
+  facesView_->setOverlayVisible(showResidualsAction_->isChecked());
+  showResidualsAction_->setEnabled(true);
+}
+
+void MainWindow::useOtherPithCandidate() {
+  if (!lastFit_ || !lastFit_->alternative) return;
+  GrowthFitResult swapped = *lastFit_;
+  const GrowthFitResult::Alternative other = *swapped.alternative;
+  swapped.alternative = GrowthFitResult::Alternative{swapped.params, swapped.rates, swapped.lossRings};
+  swapped.params = other.params;
+  swapped.rates = other.rates;
+  swapped.lossRings = other.lossRings;
+  try {
+    document_->applyGrowthField(swapped.params, swapped.rates, tr("Use other pith candidate"));
+  } catch (const InputError& e) {
+    showError(tr("The other pith candidate is not a valid field: %1").arg(QString::fromUtf8(e.what())));
+    return;
+  }
+  lastFit_ = std::make_shared<const GrowthFitResult>(std::move(swapped));
+  logMessage("info",
+             tr("Using the other pith candidate: iso-contour loss %1 ring spacings (again to switch back)")
+                 .arg(lastFit_->lossRings, 0, 'f', 4));
 }
 
 }  // namespace kerf

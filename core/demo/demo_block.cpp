@@ -1,5 +1,8 @@
 #include "demo/demo_block.hpp"
 
+#include "rings/annotations.hpp"
+#include "rings/ring_metrics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -70,6 +73,25 @@ DemoFiles writeDemo(const fs::path& folder, const DemoOptions& options, const Pr
     files.photos[i] = folder / (std::string(1, faceLetter(face)) + "_col.png");
     writeImage(files.photos[i], image);
     project.facePhotos[i] = fs::absolute(files.photos[i]);
+  }
+  if (options.numberedTraces) {
+    // Every true ring boundary pixel (rings/ring_metrics.hpp) carries the whole year it marks.
+    for (FaceId face : kAllFaces) {
+      const glm::ivec2 size = mokumeImageSize(model.block(), face);
+      const Image rings = trueRingPixels(model, face, size);
+      GrayImage8 numbered;
+      numbered.width = size.x, numbered.height = size.y;
+      numbered.pixels.assign(static_cast<std::size_t>(size.x) * size.y, 255);
+      for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+          if (rings.pixel(x, y)[0] < 0.5f) continue;
+          const float year =
+              model.material().year(model.block().pixelCenter(face, x, y, size)) - project.params.ringOffset;
+          numbered.pixels[static_cast<std::size_t>(y) * size.x + x] =
+              static_cast<unsigned char>(std::clamp(static_cast<int>(std::lround(year)), 0, 254));
+        }
+      writeGrayImage8(folder / (std::string(1, faceLetter(face)) + kMokumeRingSuffix + ".png"), numbered);
+    }
   }
   files.truth = folder / "truth.json";
   nlohmann::json truth = {{"format", "kerf-demo-truth"},

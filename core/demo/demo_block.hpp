@@ -17,6 +17,9 @@ struct DemoOptions {
   int samples = 3;         // supersampling per pixel side
   std::uint32_t seed = 7;  // model.seed of the demo wood
   bool photoLook = true;   // add lighting/colour/noise effects to the faces
+  // Also write the true rings as numbered traces in the Mokume annotation format (<F>_ann.png at
+  // Mokume's 6.4 px/mm, pixel value = the ring's year), as a user who traced every ring would.
+  bool numberedTraces = false;
 };
 
 // The demo block's true parameters: a 40 mm cube of ring-porous hardwood with its pith outside the block.

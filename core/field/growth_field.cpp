@@ -1,7 +1,5 @@
 #include "field/growth_field.hpp"
 
-#include "field/bspline.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -72,38 +70,14 @@ float GrowthField::radialValue(int ih, int ia, const RadialPosition& p) const {
 }
 
 float GrowthField::evaluate(const Cylindrical& c) const {
-  // Height: clamped B-spline over the levels; constant beyond the first/last level.
-  const int nh = rates_.heights, na = rates_.azimuths;
-  float fh = 0.0f;
-  if (nh > 1) {
-    fh = (c.height - rates_.heightMin) / (rates_.heightMax - rates_.heightMin) * (nh - 1);
-    fh = std::clamp(fh, 0.0f, static_cast<float>(nh - 1));
-  }
-  const int ih = std::min(static_cast<int>(fh), nh - 1);
-  float wh[4];
-  bsplineWeights<float>(fh - ih, wh);
-  // Azimuth: n_a spokes evenly around the full circle, periodic B-spline.
-  float fa = (c.azimuth + std::numbers::pi_v<float>)*(na / (2.0f * std::numbers::pi_v<float>));
-  fa = std::clamp(fa, 0.0f, static_cast<float>(na));
-  const int ia = static_cast<int>(fa);
-  float wa[4];
-  bsplineWeights<float>(fa - ia, wa);
-
-  // The four spokes around the point, wrapped around the circle (ia is in [0, na]).
-  int spokes[4];
-  for (int j = 0; j < 4; ++j) {
-    int spoke = ia - 1 + j;
-    if (spoke < 0) spoke += na;
-    while (spoke >= na) spoke -= na;
-    spokes[j] = spoke;
-  }
+  const GridStencil stencil = gridStencil(rates_, c.height, c.azimuth);
   const RadialPosition radial = radialPosition(c.radius);
   float g = 0.0f;
   for (int i = 0; i < 4; ++i) {
-    const int h = std::clamp(ih - 1 + i, 0, nh - 1);
     float row = 0.0f;
-    for (int j = 0; j < 4; ++j) row += wa[j] * radialValue(h, spokes[j], radial);
-    g += wh[i] * row;
+    for (int j = 0; j < 4; ++j)
+      row += stencil.spokeWeights[j] * radialValue(stencil.heights[i], stencil.spokes[j], radial);
+    g += stencil.heightWeights[i] * row;
   }
   return g;
 }

@@ -9,6 +9,7 @@
 
 #include "field/bspline.hpp"
 #include "field/growth_field.hpp"
+#include "fit/gray_map.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -20,19 +21,8 @@ namespace {
 std::map<int, std::vector<double>> columnCoefficients(const GrowthRates& g, const PithAxis& axis,
                                                       float ringWidth, glm::vec3 p) {
   const Cylindrical c = axis.toCylindrical(p);
-  const int nh = g.heights, na = g.azimuths, nr = g.radii;
-  float fh = 0.0f;
-  if (nh > 1) {
-    fh = (c.height - g.heightMin) / (g.heightMax - g.heightMin) * (nh - 1);
-    fh = std::clamp(fh, 0.0f, static_cast<float>(nh - 1));
-  }
-  const int ih = std::min(static_cast<int>(fh), nh - 1);
-  double wh[4], wa[4];
-  bsplineWeights<double>(fh - ih, wh);
-  float fa = (c.azimuth + std::numbers::pi_v<float>)*(na / (2.0f * std::numbers::pi_v<float>));
-  fa = std::clamp(fa, 0.0f, static_cast<float>(na));
-  const int ia = static_cast<int>(fa);
-  bsplineWeights<double>(fa - ia, wa);
+  const int nr = g.radii;
+  const GridStencil stencil = gridStencil(g, c.height, c.azimuth);
 
   // Radial coefficients of one column (shared by all 16 columns: they depend on r only).
   std::vector<double> radial(nr, 0.0);
@@ -55,12 +45,10 @@ std::map<int, std::vector<double>> columnCoefficients(const GrowthRates& g, cons
 
   std::map<int, std::vector<double>> columns;
   for (int i = 0; i < 4; ++i) {
-    const int h = std::clamp(ih - 1 + i, 0, nh - 1);
     for (int j = 0; j < 4; ++j) {
-      const int a = ((ia - 1 + j) % na + na) % na;
-      const double w = wh[i] * wa[j];
+      const double w = static_cast<double>(stencil.heightWeights[i]) * stencil.spokeWeights[j];
       if (w == 0.0) continue;
-      auto& col = columns[h * na + a];
+      auto& col = columns[stencil.heights[i] * g.azimuths + stencil.spokes[j]];
       if (col.empty()) col.assign(nr, 0.0);
       for (int k = 0; k < nr; ++k) col[k] += w * radial[k];
     }
@@ -68,40 +56,75 @@ std::map<int, std::vector<double>> columnCoefficients(const GrowthRates& g, cons
   return columns;
 }
 
-// One contour point: rho(sum_k A_k exp(s_k) - level).
-class PointCost final : public ceres::CostFunction {
- public:
-  PointCost(std::vector<std::vector<double>> weights, int radii, double scale, double sqrtWeight)
-      : w_(std::move(weights)), radii_(radii), b2_(scale * scale), sw_(sqrtWeight) {
+// A residual of G(p) = sum_k A_k exp(s_k) over the columns a point touches: the value and the
+// Jacobian of G in s, shared by the contour and image residuals.
+class RateResidual : public ceres::CostFunction {
+ protected:
+  RateResidual(std::vector<std::vector<double>> weights, int radii, int extraBlocks)
+      : w_(std::move(weights)), radii_(radii) {
     set_num_residuals(1);
     for (std::size_t i = 0; i < w_.size(); ++i) mutable_parameter_block_sizes()->push_back(radii);
-    mutable_parameter_block_sizes()->push_back(1);
+    for (int i = 0; i < extraBlocks; ++i) mutable_parameter_block_sizes()->push_back(1);
   }
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const int n = static_cast<int>(w_.size());
+  int columns() const { return static_cast<int>(w_.size()); }
+  double field(double const* const* s) const {
     double g = 0;
-    for (int b = 0; b < n; ++b)
+    for (int b = 0; b < columns(); ++b)
       for (int k = 0; k < radii_; ++k)
-        if (w_[b][k] != 0.0) g += w_[b][k] * std::exp(parameters[b][k]);
-    const double r = g - parameters[n][0];
+        if (w_[b][k] != 0.0) g += w_[b][k] * std::exp(s[b][k]);
+    return g;
+  }
+  // jacobians[b] = dG/ds_b * factor for the column blocks.
+  void fieldJacobian(double const* const* s, double factor, double** jacobians) const {
+    for (int b = 0; b < columns(); ++b) {
+      if (!jacobians[b]) continue;
+      for (int k = 0; k < radii_; ++k)
+        jacobians[b][k] = w_[b][k] != 0.0 ? factor * w_[b][k] * std::exp(s[b][k]) : 0.0;
+    }
+  }
+
+ private:
+  std::vector<std::vector<double>> w_;
+  int radii_;
+};
+
+// One contour point: rho(G(p) - level), soft-L1.
+class PointCost final : public RateResidual {
+ public:
+  PointCost(std::vector<std::vector<double>> weights, int radii, double scale, double sqrtWeight)
+      : RateResidual(std::move(weights), radii, 1), b2_(scale * scale), sw_(sqrtWeight) {}
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const int n = columns();
+    const double r = field(parameters) - parameters[n][0];
     const double sq = std::sqrt(1.0 + r * r / b2_), kf = std::sqrt(2.0 / (sq + 1.0));
     residuals[0] = sw_ * r * kf;
     if (jacobians) {
       const double df = sw_ * (kf - r * r / (kf * (sq + 1.0) * (sq + 1.0) * b2_ * sq));
-      for (int b = 0; b < n; ++b) {
-        if (!jacobians[b]) continue;
-        for (int k = 0; k < radii_; ++k)
-          jacobians[b][k] = w_[b][k] != 0.0 ? df * w_[b][k] * std::exp(parameters[b][k]) : 0.0;
-      }
+      fieldJacobian(parameters, df, jacobians);
       if (jacobians[n]) jacobians[n][0] = -df;
     }
     return true;
   }
 
  private:
-  std::vector<std::vector<double>> w_;
-  int radii_;
   double b2_, sw_;
+};
+
+// One face pixel of the image term (Mokume Eq. 5): w (M(G(p)) - target), M fixed.
+class ImageCost final : public RateResidual {
+ public:
+  ImageCost(std::vector<std::vector<double>> weights, int radii, const GrayMap* map, double target, double w)
+      : RateResidual(std::move(weights), radii, 0), map_(map), target_(target), sw_(w) {}
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const double g = field(parameters);
+    residuals[0] = sw_ * (map_->value(g) - target_);
+    if (jacobians) fieldJacobian(parameters, sw_ * map_->slope(g), jacobians);
+    return true;
+  }
+
+ private:
+  const GrayMap* map_;
+  double target_, sw_;
 };
 
 class LinearDifference final : public ceres::CostFunction {
@@ -183,13 +206,27 @@ std::vector<RateCoefficient> growthCoefficients(const GrowthRates& layout, const
   return out;
 }
 
+namespace {
+
+// G at a point from its column coefficients and the log-rates s.
+double fieldValue(const std::map<int, std::vector<double>>& columns, const std::vector<double>& s, int nr) {
+  double g = 0;
+  for (const auto& [col, w] : columns)
+    for (int k = 0; k < nr; ++k)
+      if (w[k] != 0.0) g += w[k] * std::exp(s[static_cast<std::size_t>(col) * nr + k]);
+  return g;
+}
+
+}  // namespace
+
 DistortionFitResult fitDistortions(const IsoContours& contours, const Block& block, const PithAxis& axis,
                                    float ringWidthMm, const DistortionFitOptions& options,
-                                   const Progress& progress) {
+                                   const Progress& progress, const std::array<GrayImage8, 6>* ringImages) {
   if (contours.count() == 0) throw InputError("no ring contours to fit the growth rates to");
   const auto t0 = std::chrono::steady_clock::now();
   DistortionFitResult result;
-  GrowthRates layout = GrowthRates::uniform(block, axis, options.heights, options.azimuths, options.radii);
+  GrowthRates layout = GrowthRates::uniform(block, axis, options.heights, options.azimuths, options.radii,
+                                            GrowthRates::Azimuths::Block);
   const int nr = layout.radii, columns = layout.heights * layout.azimuths;
   result.lossBefore = isoContourLoss(contours, GrowthField(axis, ringWidthMm, layout), 1.0);
 
@@ -213,36 +250,39 @@ DistortionFitResult fitDistortions(const IsoContours& contours, const Block& blo
   // Levels start at each contour's median value of the undeformed field.
   {
     std::vector<std::vector<double>> values(contours.count());
-    for (int i = 0; i < m; ++i) {
-      double g = 0;
-      for (const auto& [col, w] : coefficients[i])
-        for (double v : w) g += v;
-      values[pointContour[i]].push_back(g);
-    }
+    for (int i = 0; i < m; ++i) values[pointContour[i]].push_back(fieldValue(coefficients[i], s, nr));
     for (int c = 0; c < contours.count(); ++c) level[c] = lowerMedian(values[c]);
   }
-
   ceres::Problem problem;
   const double sw = 1.0 / std::sqrt(static_cast<double>(m));
-  for (int i = 0; i < m; ++i) {
+  auto addFieldResidual = [&](const std::map<int, std::vector<double>>& columnsOfPoint, auto makeCost,
+                              double* extraBlock) {
     std::vector<std::vector<double>> weights;
     std::vector<double*> blocks;
-    for (const auto& [col, w] : coefficients[i]) {
+    for (const auto& [col, w] : columnsOfPoint) {
       weights.push_back(w);
       blocks.push_back(&s[static_cast<std::size_t>(col) * nr]);
     }
-    blocks.push_back(&level[pointContour[i]]);
-    problem.AddResidualBlock(new PointCost(std::move(weights), nr, options.robustScaleYears, sw), nullptr,
-                             blocks);
-  }
-  // Smoothness: neighbouring spokes (periodic), heights, radial cells.
+    if (extraBlock) blocks.push_back(extraBlock);
+    problem.AddResidualBlock(makeCost(std::move(weights)), nullptr, blocks);
+  };
+  for (int i = 0; i < m; ++i)
+    addFieldResidual(
+        coefficients[i],
+        [&](std::vector<std::vector<double>> w) {
+          return new PointCost(std::move(w), nr, options.robustScaleYears, sw);
+        },
+        &level[pointContour[i]]);
+  // Smoothness: neighbouring spokes (periodic on the full circle), heights, radial cells.
   const int pairs = columns * 2 + columns;
+  const bool periodic = layout.fullCircle();
   const double ws = std::sqrt(options.smoothness / (static_cast<double>(pairs) * nr));
   auto col = [&](int h, int a) { return &s[static_cast<std::size_t>(h * layout.azimuths + a) * nr]; };
   for (int h = 0; h < layout.heights; ++h)
     for (int a = 0; a < layout.azimuths; ++a) {
-      problem.AddResidualBlock(new LinearDifference(nr, true, ws), nullptr, col(h, a),
-                               col(h, (a + 1) % layout.azimuths));
+      if (periodic || a + 1 < layout.azimuths)
+        problem.AddResidualBlock(new LinearDifference(nr, true, ws), nullptr, col(h, a),
+                                 col(h, (a + 1) % layout.azimuths));
       if (h + 1 < layout.heights)
         problem.AddResidualBlock(new LinearDifference(nr, true, ws), nullptr, col(h, a), col(h + 1, a));
       if (nr > 1) problem.AddResidualBlock(new LinearDifference(nr, false, ws), nullptr, col(h, a));
@@ -253,22 +293,88 @@ DistortionFitResult fitDistortions(const IsoContours& contours, const Block& blo
   for (int c = 0; c < columns; ++c)
     problem.AddResidualBlock(new Ridge(nr, wr), nullptr, &s[static_cast<std::size_t>(c) * nr]);
 
+  // The image term's samples: every imageStride-th pixel of each face's ring-localization image.
+  std::vector<std::map<int, std::vector<double>>> pixelCoefficients;
+  std::vector<double> pixelTarget;
+  if (ringImages && options.imageWeight > 0) {
+    std::vector<glm::vec3> points;
+    for (FaceId f : kAllFaces) {
+      const GrayImage8& im = (*ringImages)[faceIndex(f)];
+      if (im.empty()) continue;
+      const int st = std::max(1, options.imageStride);
+      for (int y = st / 2; y < im.height; y += st)
+        for (int x = st / 2; x < im.width; x += st) {
+          points.push_back(block.pixelCenter(f, x, y, {im.width, im.height}));
+          pixelTarget.push_back(im.at(x, y) / 255.0);
+        }
+    }
+    pixelCoefficients.resize(points.size());
+    parallelRows(static_cast<int>(points.size()), [&](int i) {
+      pixelCoefficients[i] = columnCoefficients(layout, axis, ringWidthMm, points[i]);
+    });
+  }
+  const int pixels = static_cast<int>(pixelTarget.size());
+  auto pixelValues = [&] {
+    std::vector<double> g(pixels);
+    parallelRows(pixels, [&](int i) { g[i] = fieldValue(pixelCoefficients[i], s, nr); });
+    return g;
+  };
+
   ceres::Solver::Options so;
-  so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  so.max_num_iterations = options.maxIterations;
-  so.function_tolerance = 1e-8;
+  // Inexact steps by conjugate gradients on the normal equations: every point touches 16 columns x 16
+  // radial cells (the rates are integrated along the radius), so J^T J is half dense and its sparse
+  // Cholesky took ~0.3 s per step on CN03; 30 CG iterations per step reach the same loss 2-3x faster.
+  so.linear_solver_type = ceres::CGNR;
+  so.max_linear_solver_iterations = 30;
+  so.function_tolerance = 1e-6;
   so.num_threads = 1;  // bitwise reproducible (Ceres sums costs per thread)
-  Callback callback(progress, options.maxIterations);
-  so.callbacks.push_back(&callback);
-  ceres::Solver::Summary summary;
-  ceres::Solve(so, &problem, &summary);
-  progress.throwIfCancelled();
+  const int rounds = pixels > 0 ? 1 + std::max(1, options.imageRounds) : 1;
+  const int totalIterations = options.maxIterations + (rounds - 1) * options.imageIterations;
+  int done = 0;
+  GrayMap map;
+  for (int round = 0; round < rounds; ++round) {
+    if (round == 1) {
+      // From now on with the image term: M is fitted in closed form for the current field (fit/gray_map),
+      // then held fixed while the rates move; ImageCost reads `map`, refitted before every round.
+      map = fitGrayMap(pixelValues(), pixelTarget, options.grayMapBins, options.grayMapRidge);
+      result.imageLossBefore = grayMapImageLoss(map, pixelValues(), pixelTarget);
+      const double wi = std::sqrt(options.imageWeight / static_cast<double>(pixels));
+      for (int i = 0; i < pixels; ++i)
+        addFieldResidual(
+            pixelCoefficients[i],
+            [&](std::vector<std::vector<double>> w) {
+              return new ImageCost(std::move(w), nr, &map, pixelTarget[i], wi);
+            },
+            nullptr);
+    } else if (round > 1) {
+      map = fitGrayMap(pixelValues(), pixelTarget, options.grayMapBins, options.grayMapRidge);
+    }
+    const int iterations = round == 0 ? options.maxIterations : options.imageIterations;
+    so.max_num_iterations = iterations;
+    const Progress sub{progress.report ? std::function<void(double)>([&, done, iterations](double f) {
+                         progress.set((done + f * iterations) / totalIterations);
+                       })
+                                       : std::function<void(double)>(),
+                       progress.stop};
+    Callback callback(sub, iterations);
+    so.callbacks.assign(1, &callback);
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &problem, &summary);
+    progress.throwIfCancelled();
+    result.iterations += static_cast<int>(summary.iterations.size());
+    done += iterations;
+  }
+  if (pixels > 0) {
+    const std::vector<double> g = pixelValues();
+    map = fitGrayMap(g, pixelTarget, options.grayMapBins, options.grayMapRidge);
+    result.imageLossAfter = grayMapImageLoss(map, g, pixelTarget);
+    result.grayMap = map;
+  }
 
   layout.rates.resize(s.size());
   for (std::size_t k = 0; k < s.size(); ++k) layout.rates[k] = static_cast<float>(std::exp(s[k]));
   result.rates = layout;
   result.lossAfter = isoContourLoss(contours, GrowthField(axis, ringWidthMm, layout), 1.0);
-  result.iterations = static_cast<int>(summary.iterations.size());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
@@ -286,10 +392,25 @@ GrowthRates remapRingsToWholeYears(const GrowthRates& rates, float ringWidthMm,
   for (std::size_t i = 1; i < a.size(); ++i) gaps.push_back(a[i] - a[i - 1]);
   const double gap = std::max(1e-6, lowerMedian(gaps));
   const double k0 = std::max(1.0, std::round(a[0] / gap));
-  // phi: knots (0, 0), (a_i, k0 + i); beyond the last knot slope 1/gap.
-  std::vector<double> x{0.0}, y{0.0};
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (a[i] > x.back() + 1e-9) x.push_back(a[i]), y.push_back(k0 + static_cast<double>(i));
+  std::vector<double> targets;
+  for (std::size_t i = 0; i < a.size(); ++i) targets.push_back(k0 + static_cast<double>(i));
+  return remapRingLevels(rates, ringWidthMm, a, targets, radii);
+}
+
+GrowthRates remapRingLevels(const GrowthRates& rates, float ringWidthMm, const std::vector<double>& levels,
+                            const std::vector<double>& targets, int radii) {
+  if (levels.size() < 2 || levels.size() != targets.size())
+    throw InputError("at least two ring levels (and as many targets) are needed to place the rings");
+  // phi: knots (0, 0), (levels_i, targets_i), kept where both increase; beyond the last knot the
+  // median slope of the knots.
+  std::vector<double> x{0.0}, y{0.0}, slopes;
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    if (levels[i] > x.back() + 1e-9 && targets[i] > y.back() + 1e-9) {
+      if (x.size() > 1) slopes.push_back((targets[i] - y.back()) / (levels[i] - x.back()));
+      x.push_back(levels[i]), y.push_back(targets[i]);
+    }
+  if (x.size() < 3) throw InputError("the ring levels do not increase with their years");
+  const double gap = 1.0 / std::max(1e-6, lowerMedian(slopes));
   auto phi = [&](double g) {
     if (g >= x.back()) return y.back() + (g - x.back()) / gap;
     if (g <= 0) return g * (y[1] / x[1]);

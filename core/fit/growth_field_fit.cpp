@@ -1,28 +1,24 @@
 #include "fit/growth_field_fit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <map>
 
 #include "field/growth_field.hpp"
+#include "fit/colour_fit.hpp"
 #include "fit/distortion_fit.hpp"
 #include "fit/iso_contour_loss.hpp"
 #include "fit/iso_contours.hpp"
 #include "util/error.hpp"
+#include "util/parallel.hpp"
 #include "util/resource_usage.hpp"
 
 namespace kerf {
 
 namespace {
-
-// A part [from, to] of a job's progress.
-Progress part(const Progress& progress, double from, double to) {
-  Progress sub{nullptr, progress.stop};
-  if (progress.report)
-    sub.report = [report = progress.report, from, to](double f) { report(from + (to - from) * f); };
-  return sub;
-}
 
 std::string format(const char* fmt, ...) {
   char buffer[1024];
@@ -52,36 +48,112 @@ void addCandidate(std::vector<std::string>& lines, const char* label, const Pith
 GrowthRates fitRates(const IsoContours& contours, const Block& block, const PithAxis& axis, float width0,
                      const std::array<GrayImage8, 6>& images, WoodParameters& params,
                      GrowthFieldFitReport& report, const Progress& progress) {
-  const DistortionFitResult d = fitDistortions(contours, block, axis, width0, {}, progress);
+  const bool anyImage =
+      std::any_of(images.begin(), images.end(), [](const GrayImage8& i) { return !i.empty(); });
+  const DistortionFitResult d =
+      fitDistortions(contours, block, axis, width0, {}, progress, anyImage ? &images : nullptr);
   const GrowthField field(axis, width0, d.rates);
   const Stopwatch placementClock;
-  const RingLevelEstimate fitted = estimateRingLevels(
-      [&field, width0](glm::vec3 p) { return static_cast<double>(field.evaluate(p)) * width0; }, block,
-      images);
-  std::vector<double> levels;
-  for (float peak : fitted.peaksMm) levels.push_back(peak / width0);
-  GrowthRates rates = remapRingsToWholeYears(d.rates, width0, levels);
+  GrowthRates rates;
+  double ringOffset = 0.0, yearsPerRing = 1.0;
+  if (contours.numberedContours() > 0) {
+    // Numbered traces (learned-inference paper Eq. 5): ring y must lie at G = y - a for one age offset a.
+    // The rates give the shape (free levels: the coarse radial grid cannot follow single years); then
+    // every numbered year's median level is moved exactly to y - a, a = median(y - level).
+    std::map<int, std::vector<double>> perYear;
+    for (int c = 0; c < contours.count(); ++c) {
+      if (!contours.year[c]) continue;
+      for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i)
+        perYear[*contours.year[c]].push_back(field.evaluate(contours.points[i]));
+    }
+    std::vector<double> levels, targets, offsets;
+    for (auto& [year, values] : perYear) {
+      levels.push_back(lowerMedian(values));
+      offsets.push_back(year - levels.back());
+    }
+    const double ageOffset = lowerMedian(offsets);
+    for (const auto& [year, values] : perYear) targets.push_back(year - ageOffset);
+    rates = levels.size() >= 2 ? remapRingLevels(d.rates, width0, levels, targets) : d.rates;
+    ringOffset = -ageOffset - std::floor(-ageOffset);
+    report.ageOffset = ageOffset;
+  } else {
+    // Ring iso-values A: the peaks of the grey map M (Eq. 6); the ring profile along the fitted field
+    // where M shows fewer than two (e.g. no ring image).
+    std::vector<double> levels;
+    if (d.grayMap) levels = d.grayMap->peakCentres();
+    RingLevelEstimate fitted;
+    if (levels.size() >= 2) {
+      for (double a : levels) fitted.peaksMm.push_back(static_cast<float>(a * width0));
+      std::vector<double> gaps;
+      for (std::size_t i = 1; i < levels.size(); ++i) gaps.push_back((levels[i] - levels[i - 1]) * width0);
+      fitted.ringWidthMm = static_cast<float>(lowerMedian(gaps));
+      report.ringsFromGrayMap = true;
+    } else {
+      fitted = estimateRingLevels(
+          [&field, width0](glm::vec3 p) { return static_cast<double>(field.evaluate(p)) * width0; }, block,
+          images);
+      levels.clear();
+      for (float peak : fitted.peaksMm) levels.push_back(peak / width0);
+    }
+    rates = remapRingsToWholeYears(d.rates, width0, levels);
+    yearsPerRing = fitted.ringWidthMm > 0 ? fitted.ringWidthMm / width0 : 1.0;
+    report.ringsAlongFitted = static_cast<int>(fitted.peaksMm.size());
+  }
+  // Rates scaled to a median of 1 and the ring width with them (G unchanged).
   std::vector<float> sorted = rates.rates;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const float median = sorted[sorted.size() / 2];
   for (float& r : rates.rates) r /= median;
   params.ringWidth = width0 / median;
-  params.ringOffset = 0.0f;
-  const GrowthField saved(axis, params.ringWidth, rates);
-  const IsoContourLoss finalLoss = isoContourLoss(contours, saved, 1.0);
-  const double toRings = fitted.ringWidthMm > 0 ? width0 / fitted.ringWidthMm : 1.0;  // rings per year
+  params.ringOffset = static_cast<float>(ringOffset);
   report.distortionsFitted = true;
   report.rateHeights = d.rates.heights;
   report.rateAzimuths = d.rates.azimuths;
   report.rateRadii = d.rates.radii;
   report.distortionIterations = d.iterations;
   report.lossBeforeRings = d.lossBefore.meanOverFaces;
-  report.lossAfterRings = d.lossAfter.meanOverFaces * toRings;
-  report.ringsAlongFitted = static_cast<int>(fitted.peaksMm.size());
-  report.finalLossRings = finalLoss.meanOverFaces;
+  report.lossAfterRings = d.lossAfter.meanOverFaces / yearsPerRing;
+  report.imageLossBefore = d.imageLossBefore;
+  report.imageLossAfter = d.imageLossAfter;
+  report.finalLossRings =
+      isoContourLoss(contours, GrowthField(axis, params.ringWidth, rates), 1.0).meanOverFaces;
   report.distortionSeconds = d.seconds;
   report.placementSeconds = placementClock.seconds();
   return rates;
+}
+
+// Without ring images: ring width and phase from the numbered contours along the undeformed field, a
+// least-squares line through (year, median distance to the axis).
+RingLevelEstimate ringLevelsFromNumberedContours(const IsoContours& contours, const PithAxis& axis) {
+  std::vector<double> years, radii;
+  for (int c = 0; c < contours.count(); ++c) {
+    if (!contours.year[c]) continue;
+    std::vector<double> r;
+    for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i)
+      r.push_back(axis.toCylindrical(contours.points[i]).radius);
+    years.push_back(*contours.year[c]);
+    radii.push_back(lowerMedian(r));
+  }
+  const double n = static_cast<double>(years.size());
+  double sy = 0, sr = 0, syy = 0, syr = 0;
+  for (std::size_t i = 0; i < years.size(); ++i)
+    sy += years[i], sr += radii[i], syy += years[i] * years[i], syr += years[i] * radii[i];
+  const double den = n * syy - sy * sy;
+  if (years.size() < 2 || den <= 1e-9)
+    throw InputError(
+        "without ring-localization images the fit needs numbered traces of at least two different "
+        "years (number the traces, or detect rings first)");
+  const double slope = (n * syr - sy * sr) / den;
+  if (!(std::abs(slope) > 1e-3))
+    throw InputError("the numbered traces do not get wider apart from the pith: check their year numbers");
+  RingLevelEstimate est;
+  est.ringWidthMm = static_cast<float>(std::abs(slope));
+  // Ring y at distance r0 + slope * y; in Kerf's years that is G = r / width; the phase is G's fraction
+  // there.
+  const double phase = ((sr - slope * sy) / n) / est.ringWidthMm;
+  est.ringOffset = static_cast<float>(phase - std::floor(phase));
+  est.medianSpacingMm = est.ringWidthMm;
+  return est;
 }
 
 }  // namespace
@@ -95,11 +167,15 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   IsoContours contours;
   for (FaceId face : kAllFaces) {
     const GrayImage8& image = input.rings[faceIndex(face)];
-    if (image.empty()) continue;
+    if (image.empty() || !input.contoursFromImages) continue;
     const auto pixels = extractIsoContours(image);
     addFaceContours(contours, block, face, {image.width, image.height}, pixels);
     report.contoursPerFace[faceIndex(face)] = static_cast<int>(pixels.size());
   }
+  const int imageContours = contours.count();
+  addTraceContours(contours, block, input.traces);
+  report.tracesUsed = contours.count() - imageContours;
+  report.numberedTraces = contours.numberedContours();
   report.extractSeconds = extractClock.seconds();
   if (contours.count() < options.minContours || contours.facesWithContours() < options.minFaces)
     throw InputError(
@@ -109,8 +185,10 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   progress.throwIfCancelled();
 
   // Anatomical prior (fit/anatomy_prior.hpp): the fibre direction from the face photos' texture.
+  const Stopwatch anatomyClock;
   if (std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); }))
     report.anatomy = estimateFibreDirection(input.photos, block);
+  report.anatomySeconds = anatomyClock.seconds();
   PithFitOptions pithOptions;
   pithOptions.principal = options.principal;
   if (report.anatomy && options.useAnatomy && options.anatomyWeight > 0) {
@@ -118,33 +196,94 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     pithOptions.anatomyWeight = options.anatomyWeight;
     report.anatomyUsed = true;
   }
-  report.pith = fitPith(contours, block, pithOptions, part(progress, 0.0, options.pithOnly ? 0.95 : 0.45));
+  report.pith = fitPith(contours, block, pithOptions, progress.part(0.0, options.pithOnly ? 0.95 : 0.45));
   const PithCandidate& best = report.pith.best;
   if (report.anatomy) report.anatomyAngleDeg = anatomyAngleDeg(*report.anatomy, best.axis.direction);
 
-  const Stopwatch ringClock;
-  report.rings = estimateRingLevels(best.axis, block, input.rings);
-  report.ringSeconds = ringClock.seconds();
-
-  WoodParameters params = current;
-  params.pithOrigin = best.axis.origin;
-  params.pithTilt = best.tiltDeg;
-  params.pithAzimuth = best.azimuthDeg;
-  params.ringWidth = report.rings.ringWidthMm;
-  params.ringOffset = report.rings.ringOffset;
-  // The axis exactly as the parameters rebuild it.
-  const PithAxis axis = PithAxis::fromAngles(params.pithOrigin, params.pithTilt, params.pithAzimuth);
-  if (options.pithOnly) {
-    report.finalLossRings =
-        report.rings.ringWidthMm > 0 ? best.loss.meanOverFaces / report.rings.ringWidthMm : 0;
-  } else {
-    out.rates = fitRates(contours, block, axis, report.rings.ringWidthMm, input.rings, params, report,
-                         part(progress, 0.45, 0.95));
+  const bool anyImage =
+      std::any_of(input.rings.begin(), input.rings.end(), [](const GrayImage8& i) { return !i.empty(); });
+  // Everything after the pith for one pith candidate: ring width and phase along it, then the rates.
+  auto fieldAround = [&](const PithCandidate& candidate, GrowthFieldFitReport& r, const Progress& sub,
+                         bool preview) {
+    const Stopwatch ringClock;
+    r.rings = anyImage ? estimateRingLevels(candidate.axis, block, input.rings)
+                       : ringLevelsFromNumberedContours(contours, candidate.axis);
+    r.ringSeconds = ringClock.seconds();
+    GrowthFieldFitAlternative field;
+    field.params = current;
+    field.params.pithOrigin = candidate.axis.origin;
+    field.params.pithTilt = candidate.tiltDeg;
+    field.params.pithAzimuth = candidate.azimuthDeg;
+    field.params.ringWidth = r.rings.ringWidthMm;
+    field.params.ringOffset = r.rings.ringOffset;
+    // The axis exactly as the parameters rebuild it.
+    const PithAxis axis =
+        PithAxis::fromAngles(field.params.pithOrigin, field.params.pithTilt, field.params.pithAzimuth);
+    validate(field.params);  // before the costly rates: a pith far outside the ranges is refused at once
+    if (preview && options.preview) options.preview(field.params, std::nullopt);
+    if (options.pithOnly) {
+      r.finalLossRings = r.rings.ringWidthMm > 0 ? candidate.loss.meanOverFaces / r.rings.ringWidthMm : 0;
+    } else {
+      field.rates = fitRates(contours, block, axis, r.rings.ringWidthMm, input.rings, field.params, r, sub);
+    }
+    r.ringWidthMm = field.params.ringWidth;
+    field.finalLossRings = r.finalLossRings;
+    field.pith = candidate;
+    validate(field.params);
+    return field;
+  };
+  const bool alternative = report.pith.ambiguous && report.pith.flipped && options.fitAlternative;
+  const double end = alternative ? 0.75 : 0.95;
+  const GrowthFieldFitAlternative chosen =
+      fieldAround(report.pith.best, report, progress.part(0.45, end), true);
+  out.params = chosen.params;
+  out.rates = chosen.rates;
+  if (alternative) {
+    // Mokume B.1: the mirrored pith explains the rings almost as well; fit it too so the user can pick.
+    GrowthFieldFitReport other = report;
+    try {
+      out.alternative = fieldAround(*report.pith.flipped, other, progress.part(end, 0.95), false);
+      report.alternativeLossRings = out.alternative->finalLossRings;
+    } catch (const InputError& e) {
+      report.alternativeNote = std::string("the other candidate cannot be used as a field: ") + e.what();
+    }
   }
-  report.ringWidthMm = params.ringWidth;
+  // Step 3: the colours of the wood and of each face, given the field (Mokume A.2.3).
+  const bool photos =
+      std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); });
+  if (options.fitColours && photos && out.rates) {
+    const ColourFitResult colours =
+        fitColours(block, out.params, *out.rates, input.photos, {}, progress.part(0.95, 0.99));
+    out.params = colours.params;
+    report.coloursFitted = true;
+    report.colourL1Before = colours.l1Before;
+    report.colourL1After = colours.l1After;
+    report.colourSeconds = colours.seconds;
+  }
+  if (options.preview) options.preview(out.params, out.rates);
+
+  // What is left of every contour: its mean distance from its own ring, in ring spacings.
+  const PithAxis finalAxis =
+      PithAxis::fromAngles(out.params.pithOrigin, out.params.pithTilt, out.params.pithAzimuth);
+  const GrowthField final(out.params, out.rates ? *out.rates : GrowthRates::uniform(block, finalAxis));
+  out.contours.resize(contours.count());
+  parallelRows(contours.count(), [&](int c) {
+    ContourResidual& cr = out.contours[c];
+    cr.face = contours.face[c];
+    cr.year = contours.year[c];
+    std::vector<double> g;
+    for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i) {
+      cr.points.push_back(contours.points[i]);
+      g.push_back(final.evaluate(contours.points[i]));
+    }
+    std::vector<double> sorted = g;
+    const double median = lowerMedian(sorted);
+    double sum = 0;
+    for (double v : g) sum += std::abs(v - median);
+    cr.residualRings = g.empty() ? 0.0 : sum / static_cast<double>(g.size());  // rings at whole years
+    cr.fromTrace = c >= imageContours;
+  });
   progress.set(1.0);
-  validate(params);
-  out.params = params;
   return out;
 }
 
@@ -156,7 +295,9 @@ std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& 
     if (n < 0) continue;
     perFace += format("%s%c %d", perFace.empty() ? "" : ", ", faceLetter(face), n);
   }
-  lines.push_back("contours per face: " + perFace);
+  lines.push_back("contours per face: " + (perFace.empty() ? std::string("none from ring images") : perFace));
+  if (r.tracesUsed > 0)
+    lines.push_back(format("ring traces: %d (%d numbered by year)", r.tracesUsed, r.numberedTraces));
   if (r.anatomy)
     lines.push_back(
         format("anatomy: fibre direction from the texture of %d face photos F = (%.3f, %.3f, %.3f), "
@@ -188,24 +329,50 @@ std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& 
   } else {
     lines.push_back("ambiguity (Mokume B.1): none (the mirrored start converged to the same axis)");
   }
+  if (!r.alternativeNote.empty()) lines.push_back("  " + r.alternativeNote);
+  if (r.alternativeLossRings)
+    lines.push_back(
+        format("  the field around the other candidate was fitted too (iso-contour loss %.4f ring "
+               "spacings); it can be chosen instead",
+               *r.alternativeLossRings));
   if (r.distortionsFitted) {
     lines.push_back(
         format("distortions (Mokume Eq. 4): %d x %d x %d rates, iso-contour loss %.4f -> %.4f ring "
                "spacings (mean over faces), %d iterations",
                r.rateHeights, r.rateAzimuths, r.rateRadii, r.lossBeforeRings, r.lossAfterRings,
                r.distortionIterations));
-    lines.push_back(
-        format("rings along the fitted field: %d found, moved to whole years; fitted field: "
-               "iso-contour loss %.4f ring spacings, typical ring width %.4f mm",
-               r.ringsAlongFitted, r.finalLossRings, r.ringWidthMm));
+    if (r.ageOffset)
+      lines.push_back(
+          format("numbered traces (learned-inference Eq. 5): ring year y at G = y %+.3f; "
+                 "fitted field: iso-contour loss %.4f ring spacings, typical ring width %.4f mm",
+                 -*r.ageOffset, r.finalLossRings, r.ringWidthMm));
+    if (r.imageLossAfter > 0)
+      lines.push_back(format("image loss (Mokume Eq. 5, mean |M(G) - ARL|): %.4f -> %.4f", r.imageLossBefore,
+                             r.imageLossAfter));
+    if (!r.ageOffset)
+      lines.push_back(
+          format("rings %s: %d found, moved to whole years; fitted field: "
+                 "iso-contour loss %.4f ring spacings, typical ring width %.4f mm",
+                 r.ringsFromGrayMap ? "at the peaks of the grey map M (Eq. 6)" : "along the fitted field",
+                 r.ringsAlongFitted, r.finalLossRings, r.ringWidthMm));
   } else {
     lines.push_back("distortions (Mokume Eq. 4-6) not fitted (pith only): uniform growth rates");
   }
+  if (r.coloursFitted) {
+    std::string faces;
+    for (FaceId f : kAllFaces) {
+      const int i = faceIndex(f);
+      if (r.colourL1Before[i] <= 0) continue;
+      faces += format("%s%c %.3f -> %.3f", faces.empty() ? "" : ", ", faceLetter(f), r.colourL1Before[i],
+                      r.colourL1After[i]);
+    }
+    lines.push_back("colours (Mokume A.2.3), mean |model - photo| per face: " + faces);
+  }
   lines.push_back(
-      format("time: contours %.3f s, grid search %.3f s, refinement %.3f s, rings %.3f s, "
-             "distortions %.3f s, ring placement %.3f s",
-             r.extractSeconds, r.pith.gridSeconds, r.pith.refineSeconds, r.ringSeconds, r.distortionSeconds,
-             r.placementSeconds));
+      format("time: contours %.3f s, anatomy %.3f s, grid search %.3f s, refinement %.3f s, rings %.3f s, "
+             "distortions %.3f s, ring placement %.3f s, colours %.3f s",
+             r.extractSeconds, r.anatomySeconds, r.pith.gridSeconds, r.pith.refineSeconds, r.ringSeconds,
+             r.distortionSeconds, r.placementSeconds, r.colourSeconds));
   return lines;
 }
 

@@ -5,6 +5,7 @@
 // field (Sec. 5.2.3, fit/pith_fit.hpp) with the ring width and phase along it, and step 2 the growth rates
 // R (Eq. 4-6, fit/distortion_fit.hpp) with the rings moved to whole years.
 #include <array>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 #include "geometry/block.hpp"
 #include "io/image.hpp"
 #include "params/parameter_schema.hpp"
+#include "rings/annotations.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {
@@ -24,6 +26,12 @@ namespace kerf {
 struct GrowthFieldFitInput {
   std::array<GrayImage8, 6> rings;  // ring-localization images, A..F; empty: the face is skipped
   std::array<Image, 6> photos;      // face photos for the anatomical prior, A..F; empty: none
+  // The user's ring traces (rings/annotations.hpp), fitted as contours besides the images' ones;
+  // numbered traces pin the rings to their years (learned-inference paper Eq. 5).
+  std::vector<RingTrace> traces;
+  // False: the images give no contours, only the ring levels and the image term (the editor, where the
+  // detected contours became traces the user corrected).
+  bool contoursFromImages = true;
 };
 
 struct GrowthFieldFitOptions {
@@ -33,6 +41,13 @@ struct GrowthFieldFitOptions {
   double anatomyWeight = 1.0;    // 0: report only
   int minContours = 0;           // fewer contours (or contours on fewer than minFaces faces): InputError
   int minFaces = 0;
+  // When the pith side is ambiguous (Mokume B.1), also fit the field around the mirrored candidate.
+  bool fitAlternative = true;
+  // Step 3, colour initialisation (fit/colour_fit.hpp), when there are face photos.
+  bool fitColours = true;
+  // Live preview: called (from the fitting thread) with the undeformed field after the pith stage
+  // (rates: none) and with the final field.
+  std::function<void(const WoodParameters&, const std::optional<GrowthRates>&)> preview;
 };
 
 struct GrowthFieldFitReport {
@@ -45,16 +60,46 @@ struct GrowthFieldFitReport {
   bool distortionsFitted = false;
   int rateHeights = 0, rateAzimuths = 0, rateRadii = 0, distortionIterations = 0;
   double lossBeforeRings = 0, lossAfterRings = 0;  // distortion fit, mean over faces, ring spacings
+  double imageLossBefore = 0, imageLossAfter = 0;  // Eq. 5, mean |M(G) - ARL| (0: no image term)
+  int tracesUsed = 0, numberedTraces = 0;          // the user's traces among the contours
+  std::optional<double> ageOffset;                 // numbered traces: ring y at G = y - ageOffset
+  std::optional<double> alternativeLossRings;      // the other candidate's field, when fitted
+  std::string alternativeNote;                     // why it was not, when it could not be
+  bool ringsFromGrayMap = false;                   // ring levels from M's peaks (Eq. 6)
   int ringsAlongFitted = 0;                        // rings found along the fitted field
   double finalLossRings = 0;  // the returned field (pith only: the undeformed one), ring spacings
   float ringWidthMm = 0;      // growth.ring_width of the result
+  double anatomySeconds = 0;
+  bool coloursFitted = false;
+  std::array<double, 6> colourL1Before{}, colourL1After{};  // mean |model - photo| per face (0..1)
+  double colourSeconds = 0;
   double extractSeconds = 0, ringSeconds = 0, distortionSeconds = 0, placementSeconds = 0;
+};
+
+// A whole field around one pith candidate.
+struct GrowthFieldFitAlternative {
+  WoodParameters params;
+  std::optional<GrowthRates> rates;
+  PithCandidate pith;
+  double finalLossRings = 0;
+};
+
+// One contour after the fit: where it is (block mm) and how far its points stray from their own ring.
+struct ContourResidual {
+  FaceId face = FaceId::A;
+  std::vector<glm::vec3> points;
+  double residualRings = 0;  // mean |G - median G| over its points, in ring spacings
+  std::optional<int> year;   // numbered trace
+  bool fromTrace = false;    // a user's trace (else a contour of a ring-localization image)
 };
 
 struct GrowthFieldFitResult {
   WoodParameters params;  // the input parameters with growth.pith_*, ring_width, ring_offset replaced
   std::optional<GrowthRates> rates;  // none with pithOnly (uniform rates around the fitted axis)
   GrowthFieldFitReport report;
+  // The field around the mirrored pith when the fit was ambiguous (options.fitAlternative).
+  std::optional<GrowthFieldFitAlternative> alternative;
+  std::vector<ContourResidual> contours;  // every contour fitted, with its residual under `params`
 };
 
 // Throws InputError when there is nothing to fit (see minContours), Cancelled on request.

@@ -1,5 +1,7 @@
 #include "fit/iso_contour_loss.hpp"
 
+#include "rings/annotations.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,7 +31,26 @@ void addFaceContours(IsoContours& contours, const Block& block, FaceId face, glm
     }
     contours.begin.push_back(static_cast<int>(contours.points.size()));
     contours.face.push_back(face);
+    contours.year.push_back(std::nullopt);
   }
+}
+
+void addTraceContours(IsoContours& contours, const Block& block, const std::vector<RingTrace>& traces,
+                      float spacingMm) {
+  for (const RingTrace& trace : traces) {
+    if (trace.points.size() < 2) continue;
+    RingTrace dense = trace;
+    dense.points = resamplePolyline(trace.points, spacingMm);
+    for (const glm::vec3& p : traceToBlock(dense, block)) contours.points.push_back(p);
+    contours.begin.push_back(static_cast<int>(contours.points.size()));
+    contours.face.push_back(trace.face);
+    contours.year.push_back(trace.year);
+  }
+}
+
+int IsoContours::numberedContours() const {
+  return static_cast<int>(
+      std::count_if(year.begin(), year.end(), [](const auto& y) { return y.has_value(); }));
 }
 
 double lowerMedian(std::vector<double>& v) {

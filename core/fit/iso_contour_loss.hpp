@@ -16,6 +16,7 @@
 #include <functional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 #include "geometry/block.hpp"
@@ -23,16 +24,21 @@
 namespace kerf {
 
 class GrowthField;
+struct RingTrace;
 
 struct IsoContours {
   std::vector<glm::vec3> points;  // block mm, contour after contour
   std::vector<int> begin{0};      // contour c holds points [begin[c], begin[c + 1])
   std::vector<FaceId> face;       // the face of each contour
+  // The year of each contour when the user numbered it (numbered traces, learned-inference paper
+  // Sec. 3.2.3); none for contours of a ring-localization image.
+  std::vector<std::optional<int>> year;
 
   int count() const { return static_cast<int>(face.size()); }
   int size(int c) const { return begin[c + 1] - begin[c]; }
   int contoursOnFace(FaceId f) const;
   int facesWithContours() const;
+  int numberedContours() const;
 };
 
 // Lifts pixel contours of one face image (imageSize pixels covering the face) onto the block. Pixel
@@ -40,6 +46,11 @@ struct IsoContours {
 // centre; 0 reproduces the Mokume authors' placement (their numbers, e.g. their CN03 loss).
 void addFaceContours(IsoContours& contours, const Block& block, FaceId face, glm::ivec2 imageSize,
                      const std::vector<std::vector<glm::ivec2>>& pixelContours, float pixelOffset = 0.5f);
+
+// Adds ring traces (face mm polylines, rings/annotations.hpp) resampled every spacingMm, with their
+// year numbers. Traces with fewer than two points are skipped.
+void addTraceContours(IsoContours& contours, const Block& block, const std::vector<RingTrace>& traces,
+                      float spacingMm = 0.15f);
 
 struct IsoContourLoss {
   std::array<double, 6> perFace{};  // L_f, field units (0 where a face has no contours)

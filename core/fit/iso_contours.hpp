@@ -14,18 +14,13 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
+#include "io/gray_image.hpp"
+
 #include "geometry/block.hpp"
 
 namespace kerf {
 
 // An 8-bit grey image, row-major, top row first.
-struct GrayImage8 {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> pixels;
-  std::uint8_t at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
-  bool empty() const { return pixels.empty(); }
-};
-
 // Reads a ring-localization image (e.g. Mokume's X_arl-unet.png) as the authors do: colour images
 // give their red channel (all channels are equal in Mokume's images). Throws InputError.
 GrayImage8 readRingLocalizationImage(const std::filesystem::path& path);

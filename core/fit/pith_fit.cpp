@@ -2,8 +2,10 @@
 
 #include <ceres/ceres.h>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <numeric>
@@ -253,9 +255,12 @@ Refined refineParams(const Samples& s, int levels, std::array<double, 4> x, cons
   so.linear_solver_type = ceres::DENSE_QR;  // robust where the normal equations are ill-conditioned
   so.minimizer_type = ceres::TRUST_REGION;
   so.max_num_iterations = options.maxIterations;
-  so.function_tolerance = 1e-10;
+  // A far pith lies in a long flat valley of the loss (the origin slides along it at equal loss):
+  // tighter tolerances only creep along it. 1e-7 halves the refinement time on CN03 against 1e-10 with
+  // the same loss to 4 digits.
+  so.function_tolerance = 1e-7;
   so.gradient_tolerance = 1e-12;
-  so.parameter_tolerance = 1e-10;
+  so.parameter_tolerance = 1e-8;
   so.num_threads = 1;  // the cost parallelises itself, deterministically
   StopCallback stop(progress);
   so.callbacks.push_back(&stop);
@@ -391,14 +396,25 @@ PithFitResult fitPith(const IsoContours& contours, const Block& block, const Pit
   const Samples fit = subsample(contours, fr, options.maxFitPoints, 0);
   result.fitPoints = static_cast<int>(fit.p.size());
   const int slots = static_cast<int>(starts.size()) + 1;
-  std::vector<PithCandidate> refined;
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    progress.throwIfCancelled();
-    const Refined r =
-        refineParams(fit, contours.count(), paramsFromAxis(fr, starts[i]), options, progress, prior);
-    refined.push_back(makeCandidate(contours, fr, r, options));
-    progress.set(0.4 + 0.6 * static_cast<double>(i + 1) / slots);
-  }
+  // The starts are independent: refined side by side (each on one thread; the cost's own parallel loop
+  // runs serially inside), so the result does not depend on the number of threads.
+  std::vector<PithCandidate> refined(starts.size());
+  std::atomic<int> finished{0};
+  const Progress quiet{nullptr, progress.stop};
+  std::vector<std::exception_ptr> failures(starts.size());  // not thrown across the thread pool
+  parallelRows(static_cast<int>(starts.size()), [&](int i) {
+    try {
+      const Refined r =
+          refineParams(fit, contours.count(), paramsFromAxis(fr, starts[i]), options, quiet, prior);
+      refined[i] = makeCandidate(contours, fr, r, options);
+      progress.set(0.4 + 0.6 * static_cast<double>(++finished) / slots);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  });
+  progress.throwIfCancelled();
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
   std::size_t bestIndex = 0;
   for (std::size_t i = 1; i < refined.size(); ++i)
     if (refined[i].score < refined[bestIndex].score) bestIndex = i;

@@ -5,7 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/annotations_json.hpp"
 #include "io/atomic_file.hpp"
+#include "io/sample_folder.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -75,6 +77,7 @@ json growthRatesToJson(const GrowthRates& g) {
           {"radii", g.radii},
           {"height_range_mm", json::array({g.heightMin, g.heightMax})},
           {"radius_range_mm", json::array({g.radiusMin, g.radiusMax})},
+          {"azimuth_range_rad", json::array({g.azimuthMin, g.azimuthMax})},
           {"rates", g.rates}};
 }
 
@@ -94,6 +97,12 @@ GrowthRates growthRatesFromJson(const json& in) {
     g.heightMax = readNumber(hr[1], "growth_rates.height_range_mm");
     g.radiusMin = readNumber(rr[0], "growth_rates.radius_range_mm");
     g.radiusMax = readNumber(rr[1], "growth_rates.radius_range_mm");
+    if (in.contains("azimuth_range_rad")) {  // absent in older files: the full circle
+      const json& ar = in.at("azimuth_range_rad");
+      if (!ar.is_array() || ar.size() != 2) throw InputError("growth_rates ranges must be [min, max] pairs");
+      g.azimuthMin = readNumber(ar[0], "growth_rates.azimuth_range_rad");
+      g.azimuthMax = readNumber(ar[1], "growth_rates.azimuth_range_rad");
+    }
     const json& rates = in.at("rates");
     if (!rates.is_array()) throw InputError("growth_rates.rates must be a list of numbers");
     g.rates.reserve(rates.size());
@@ -120,6 +129,7 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
               {"faces", faces},
               {"parameters", parametersToJson(project.params)}};
   if (project.rates) out["growth_rates"] = growthRatesToJson(*project.rates);
+  if (!project.annotations.empty()) out["annotations"] = annotationsToJson(project.annotations);
   if (project.cutPlane) {
     out["view"] = {{"cut_plane",
                     {{"offset_mm", project.cutPlane->offsetMm},
@@ -168,6 +178,9 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   if (in.contains("growth_rates") && !in["growth_rates"].is_null()) {
     project.rates = growthRatesFromJson(in["growth_rates"]);
   }
+  if (in.contains("annotations") && !in["annotations"].is_null()) {
+    project.annotations = annotationsFromJson(in["annotations"], project.block);
+  }
   if (in.contains("view") && in["view"].is_object() && in["view"].contains("cut_plane")) {
     const json& cut = in["view"]["cut_plane"];
     if (!cut.is_object()) throw InputError("\"view.cut_plane\" must be an object");
@@ -202,10 +215,11 @@ void saveProject(const Project& project, const fs::path& file) {
   writeTextAtomically(file, projectToJson(project, base).dump(2) + "\n");
 }
 
-Project projectFromSampleFolder(const fs::path& folder, glm::vec3 blockSize) {
+Project projectFromSampleFolder(const fs::path& folder, std::optional<glm::vec3> blockSize) {
   if (!fs::is_directory(folder)) throw InputError("not a folder: " + folder.string());
   Project project;
-  project.block = Block(blockSize);
+  const std::optional<glm::vec3> fromFile = blockSize ? std::nullopt : readSampleBlockSize(folder);
+  project.block = Block(blockSize ? *blockSize : fromFile.value_or(glm::vec3(40.0f)));
   int found = 0;
   for (FaceId face : kAllFaces) {
     for (const char* ext : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".PNG", ".JPG"}) {
@@ -220,6 +234,9 @@ Project projectFromSampleFolder(const fs::path& folder, glm::vec3 blockSize) {
   if (found == 0) {
     throw InputError("folder " + folder.string() + " holds no face photos (expected A_col.png .. F_col.png)");
   }
+  const MokumeAnnotationFiles annotationFiles = findMokumeAnnotationFiles(folder);
+  validateSampleFolder(project.facePhotos, annotationFiles, project.block, blockSize || fromFile);
+  if (annotationFiles.any()) project.annotations = readMokumeAnnotations(annotationFiles, project.block);
   return project;
 }
 

@@ -11,6 +11,7 @@
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
 #include "params/parameter_schema.hpp"
+#include "rings/annotations.hpp"
 
 namespace kerf {
 
@@ -28,6 +29,9 @@ struct Project {
   // The editor's cut plane, kept with the project so a saved view opens as it was left.
   std::optional<CutPlaneSetting> cutPlane;
   bool cutEnabled = false;
+  // The user's ring traces and knot marks (face mm; core/rings/annotations.hpp). Saved under the optional
+  // key "annotations" (core/io/annotations_json.hpp).
+  Annotations annotations;
 
   GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
 };
@@ -49,10 +53,15 @@ GrowthRates growthRatesFromJson(const nlohmann::json& json);  // throws InputErr
 Project loadProject(const std::filesystem::path& file);
 void saveProject(const Project& project, const std::filesystem::path& file);
 
-// A Mokume-style sample folder: A_col.png .. F_col.png (other extensions accepted) on a 40 mm cube.
-// Faces that are missing stay empty; a folder without any face photo is an InputError.
+// A Mokume-style sample folder: A_col.png .. F_col.png (other extensions accepted) on a 40 mm cube, or
+// on the block of the folder's block.json ({"size_mm": [x, y, z]}) when there is one and no size is
+// given. Numbered ring images <F>_ann.png and knot marks <F>_knot.png, when present, become the
+// project's annotations. Faces that are missing stay empty. InputError naming the file: a folder
+// without any face photo, an unreadable image, photos whose sizes disagree along a shared block axis,
+// a non-square photo for a cube, a photo or annotation image with other proportions than its face
+// (core/io/sample_folder.hpp).
 Project projectFromSampleFolder(const std::filesystem::path& folder,
-                                glm::vec3 blockSizeMm = glm::vec3(40.0f));
+                                std::optional<glm::vec3> blockSizeMm = std::nullopt);
 
 // A project file or a sample folder, whichever `path` is.
 Project loadDocument(const std::filesystem::path& path);

@@ -163,6 +163,7 @@ WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDire
     t += 0.5f * params_.fiberStrength * noise::value3(q, seed_ + kFiber).x;
   }
   t += params_.poreDarkness * out.pore;
+  out.pigment = t;
 
   const float sap = smoothstep(params_.sapwoodStart - 0.5f * params_.sapwoodTransition,
                                params_.sapwoodStart + 0.5f * params_.sapwoodTransition, out.year);

@@ -19,6 +19,7 @@ namespace kerf {
 struct WoodSample {
   float year = 0;                  // growth field value G (years since the pith) at the distorted point
   float latewood = 0;              // season blend s in [0, 1]: 0 earlywood, 1 latewood
+  float pigment = 0;               // Beer's-law concentration t: colour = early * (late / early)^t
   float pore = 0;                  // pore weight in [0, 1] (Wyvill kernel)
   float ray = 0;                   // ray weight in [0, 1]
   glm::vec3 color{0.0f};           // RGB in [0, 1], as stored in 8-bit images (sRGB-encoded)

@@ -76,13 +76,10 @@ Image ringRidgePixels(const Image& arl, float threshold) {
   return out;
 }
 
-Image trueRingPixels(const WoodModel& model, FaceId face, glm::ivec2 size) {
-  const float offset = model.params().ringOffset;
-  std::vector<float> phase(static_cast<std::size_t>(size.x) * size.y);
-  for (int y = 0; y < size.y; ++y)
-    for (int x = 0; x < size.x; ++x)
-      phase[static_cast<std::size_t>(y) * size.x + x] =
-          model.material().year(model.block().pixelCenter(face, x, y, size)) - offset;
+namespace {
+
+// Marks where `phase` crosses a whole number between 4-neighbours (the nearer of the two pixels).
+Image markCrossings(const std::vector<float>& phase, glm::ivec2 size) {
   Image out(size.x, size.y, 1);
   const auto mark = [&](int x0, int y0, int x1, int y1) {
     const float a = phase[static_cast<std::size_t>(y0) * size.x + x0];
@@ -100,6 +97,28 @@ Image trueRingPixels(const WoodModel& model, FaceId face, glm::ivec2 size) {
       if (y + 1 < size.y) mark(x, y, x, y + 1);
     }
   return out;
+}
+
+}  // namespace
+
+Image trueRingPixels(const WoodModel& model, FaceId face, glm::ivec2 size) {
+  const float offset = model.params().ringOffset;
+  std::vector<float> phase(static_cast<std::size_t>(size.x) * size.y);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x)
+      phase[static_cast<std::size_t>(y) * size.x + x] =
+          model.material().year(model.block().pixelCenter(face, x, y, size)) - offset;
+  return markCrossings(phase, size);
+}
+
+Image ringLinePixels(const std::function<double(glm::vec3)>& years, double offset, glm::vec3 origin,
+                     glm::vec3 du, glm::vec3 dv, glm::ivec2 size) {
+  std::vector<float> phase(static_cast<std::size_t>(size.x) * size.y);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x)
+      phase[static_cast<std::size_t>(y) * size.x + x] =
+          static_cast<float>(years(origin + (x + 0.5f) * du + (y + 0.5f) * dv) - offset);
+  return markCrossings(phase, size);
 }
 
 RingAgreement compareRingPixels(const Image& detected, const Image& reference, float tolerancePx) {

@@ -19,6 +19,12 @@ struct Progress {
   void throwIfCancelled() const {
     if (stop.stop_requested()) throw Cancelled();
   }
+  // The stage [from, to] of this work: reports 0..1 of the stage as from..to here; same stop token.
+  Progress part(double from, double to) const {
+    Progress sub{nullptr, stop};
+    if (report) sub.report = [report = report, from, to](double f) { report(from + (to - from) * f); };
+    return sub;
+  }
 };
 
 }  // namespace kerf

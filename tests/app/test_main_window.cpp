@@ -398,7 +398,9 @@ void TestMainWindow::detectsRingsAndShowsContours() {
     facesWithContours += detection->contours[i].size() >= 2;
   }
   QVERIFY2(facesWithContours >= 4, qPrintable(QString("contours on %1 faces").arg(facesWithContours)));
-  QVERIFY(window_->facesView()->hasOverlay());
+  // The contours became the document's detected ring traces (drawn by the annotation layer).
+  QVERIFY(!window_->document()->annotations().traces.empty());
+  QCOMPARE(window_->document()->annotations().traces.front().origin, TraceOrigin::Detected);
   QVERIFY(window_->showContoursAction()->isEnabled());
   QVERIFY(window_->showContoursAction()->isChecked());
 
@@ -448,10 +450,27 @@ void TestMainWindow::fitsGrowthFieldAsOneUndoStep() {
   QVERIFY(document->project().params == before);
   failed.clear();
 
+  QSignalSpy previewed(window_.get(), &MainWindow::fitPreviewed);
   window_->fitGrowthAction()->trigger();
   QVERIFY(window_->isBusy());
   QTRY_VERIFY_WITH_TIMEOUT(fitted.count() + failed.count() > 0, 4 * kTimeoutMs);
   QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
+  // Live preview: the undeformed field after the pith stage, then the fitted one, before it is applied.
+  QVERIFY2(previewed.count() >= 2, qPrintable(QString("%1 previews").arg(previewed.count())));
+  // Every fitted ring trace is drawn over the faces, coloured by its residual; hiding them changes the view.
+  FacesView* view = window_->facesView();
+  QVERIFY(view->hasOverlay());
+  int coloured = 0;
+  for (const auto& colours : view->overlayColors()) coloured += static_cast<int>(colours.size());
+  QCOMPARE(coloured, static_cast<int>(document->annotations().traces.size()));
+  QVERIFY(window_->showResidualsAction()->isEnabled());
+  QTest::qWait(50);
+  const QImage withResiduals = view->grab().toImage();
+  QVERIFY(withResiduals.save(artifact("fit_residuals")));
+  window_->showResidualsAction()->trigger();
+  QVERIFY(!view->overlayVisible());
+  QVERIFY(changedShare(withResiduals, view->grab().toImage()) > 0.005);
+  window_->showResidualsAction()->trigger();
   QCOMPARE(document->undoStack()->count(), steps + 1);
   QCOMPARE(document->undoStack()->undoText(), QStringLiteral("Fit growth field"));
   const WoodParameters after = document->project().params;
@@ -462,8 +481,8 @@ void TestMainWindow::fitsGrowthFieldAsOneUndoStep() {
   QCOMPARE(document->model()->field().rates().rates, document->project().rates->rates);
   // The log says what the fit found and how long it took.
   const QString log = window_->log()->text();
-  for (const char* expected :
-       {"pith: O = (", ", V = (", "iso-contour loss", "ambiguity (Mokume B.1)", "time: contours"})
+  for (const char* expected : {"pith: O = (", ", V = (", "iso-contour loss", "ambiguity (Mokume B.1)",
+                               "ring traces: ", "colours (Mokume A.2.3)", "time: contours"})
     QVERIFY2(log.contains(QLatin1String(expected)), expected);
 
   window_->undoAction()->trigger();

@@ -2,6 +2,8 @@
 // Regenerate after an intended change of the model with KERF_UPDATE_GOLDEN=1 and review the PNGs.
 #include <gtest/gtest.h>
 
+#include "test_files.hpp"
+
 #include <cmath>
 
 #include <cstdlib>
@@ -15,28 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Images are stored as 8-bit PNG, so 1/255 of rounding is expected; pores and ring edges may move
-// by a pixel between compilers, which the share tolerance absorbs.
-constexpr float kPixelTolerance = 0.08f;
-constexpr double kMaxShareOver = 0.005;
-constexpr double kMaxMeanAbs = 0.004;
-
-void checkGolden(const Image& rendered, const std::string& name) {
-  const fs::path golden = fs::path(KERF_GOLDEN_DIR) / (name + ".png");
-  const fs::path actual = fs::path(KERF_TEST_ARTIFACTS) / ("golden-actual-" + name + ".png");
-  writeImage(actual, rendered);
-  if (std::getenv("KERF_UPDATE_GOLDEN")) {
-    writeImage(golden, rendered);
-    return;
-  }
-  ASSERT_TRUE(fs::exists(golden)) << "missing golden " << golden << "; the rendering is in " << actual
-                                  << " (set KERF_UPDATE_GOLDEN=1 to accept it)";
-  const Image reference = readImage(golden, true);
-  const Image roundTripped = readImage(actual, true);  // compare 8-bit to 8-bit
-  const ImageDifference d = compareImages(roundTripped, reference, kPixelTolerance);
-  EXPECT_LT(d.meanAbs, kMaxMeanAbs) << name << ": see " << actual;
-  EXPECT_LT(d.shareOverTolerance, kMaxShareOver) << name << ": see " << actual;
-}
+using kerf::testing::checkGolden;
 
 }  // namespace
 

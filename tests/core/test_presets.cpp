@@ -2,6 +2,8 @@
 // values inside the ranges, and applying a preset keeps the block-specific values.
 #include <gtest/gtest.h>
 
+#include "test_files.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -21,10 +23,7 @@ namespace {
 const fs::path kPresetDir = KERF_PRESETS_DIR;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "presets" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return kerf::testing::scratchFolder("presets", name);
 }
 
 void writeText(const fs::path& path, const std::string& text) {

@@ -1,12 +1,15 @@
 // Project files: round trips, relative photo paths, versions, malformed input, atomic saves.
 #include <gtest/gtest.h>
 
+#include "test_files.hpp"
+
 #include <cmath>
 
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/image.hpp"
 #include "io/project.hpp"
 #include "util/error.hpp"
 
@@ -16,10 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "project" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return kerf::testing::scratchFolder("project", name);
 }
 
 void writeText(const fs::path& path, const std::string& text) {
@@ -149,8 +149,10 @@ TEST(Project, ClearErrorsForBadFiles) {
 TEST(Project, SampleFolderFindsFacePhotos) {
   const fs::path dir = scratch("sample");
   EXPECT_THROW(projectFromSampleFolder(dir), InputError);
-  writeText(dir / "A_col.png", "x");
-  writeText(dir / "D_col.jpg", "x");
+  // The photos are read (their sizes are checked against each other), so they must be real images.
+  Image photo(16, 16, 3);
+  writeImage(dir / "A_col.png", photo);
+  writeImage(dir / "D_col.jpg", photo);
   const Project project = loadDocument(dir);
   EXPECT_EQ(project.facePhotos[0].filename(), "A_col.png");
   EXPECT_EQ(project.facePhotos[3].filename(), "D_col.jpg");

@@ -15,7 +15,7 @@ TEST(Schema, EveryParameterIsWellFormed) {
   ASSERT_GE(schema.size(), 40u);
   std::set<std::string_view> ids, names;
   const std::set<std::string_view> groups{"growth", "rings", "color", "distortion", "fibers",
-                                          "pores",  "rays",  "faces", "model"};
+                                          "pores",  "rays",  "faces", "model",      "knots"};
   for (const ParamSpec& spec : schema) {
     EXPECT_TRUE(ids.insert(spec.id).second) << "duplicate id " << spec.id;
     EXPECT_TRUE(names.insert(spec.name).second) << "duplicate name " << spec.name;

@@ -7,6 +7,8 @@
 #include <QtTest>
 #include <memory>
 
+#include <cmath>
+
 #include "demo/demo_block.hpp"
 #include "gl/gpu_image_renderer.hpp"
 #include "render/renderers.hpp"
@@ -80,6 +82,26 @@ class GpuParityTest : public QObject {
             "busy_face_B");
     const CutPlane plane({0, 0, 0}, {1, 1, 1});
     compare(renderCut(model, plane, 2.0f), renderer_->renderCut(model, plane, 2.0f), "busy_cut");
+  }
+
+  // A fitted field's grid spans only the azimuths the block covers (pith far outside it), with rates that
+  // vary from spoke to spoke: the GLSL grid stencil must match core's gridStencil().
+  void partialAzimuthRange() {
+    Project project = demoProject();
+    WoodParameters& p = project.params;
+    p.pithOrigin = {0, 0, -160}, p.pithTilt = 6, p.ringWidth = 2.5f;
+    const PithAxis axis = PithAxis::fromAngles(p.pithOrigin, p.pithTilt, p.pithAzimuth);
+    GrowthRates rates = GrowthRates::uniform(project.block, axis, 8, 16, 16, GrowthRates::Azimuths::Block);
+    QVERIFY(!rates.fullCircle());
+    for (int h = 0; h < rates.heights; ++h)
+      for (int a = 0; a < rates.azimuths; ++a)
+        for (int r = 0; r < rates.radii; ++r)
+          rates.at(h, a, r) = 1.0f + 0.4f * std::sin(1.3f * a + 0.7f * r + h);
+    project.rates = rates;
+    const WoodModel model(project);
+    for (FaceId face : {FaceId::A, FaceId::B, FaceId::E})
+      compare(renderFace(model, face, {96, 96}), renderer_->renderFace(model, face, {96, 96}),
+              QString("partial_azimuths_face_%1").arg(faceLetter(face)));
   }
 
  private:

@@ -64,6 +64,7 @@ void WoodProgram::setModel(const WoodModel& model) {
   // glUniform1ui directly: QOpenGLShaderProgram's GLuint overload goes through glUniform1i.
   gl->glUniform1ui(program_.uniformLocation("u_hashSeed"), model.material().hashSeed());
   program_.setUniformValue("u_gridRange", rates.heightMin, rates.heightMax, rates.radiusMin, rates.radiusMax);
+  program_.setUniformValue("u_azimuthRange", rates.azimuthMin, rates.azimuthMax);
 
   growthTable_ = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target3D);
   growthTable_->setFormat(QOpenGLTexture::R32F);

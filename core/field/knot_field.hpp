@@ -1,0 +1,102 @@
+#pragma once
+// The time field of a log with knots, Larsson et al. 2022 Sec. 4.1-4.3 (docs/knots.md):
+//
+//   stem time     t_s = d_s / r_s(z, azimuth)                         (Eq. 1, pseudo-nearest point at equal
+//   z) knot time     T_b = d_b / v_b(beta, t_s)                          (Eq. 1, pseudo-nearest point at
+//   equal d) smooth min    smin(a, b, k) = (a^k b^k / (a^k + b^k))^(1/k)        (Eq. 2) smoothing     delta =
+//   smin - min                                   (Eq. 3), smin' = min + delta' (Eq. 4) adaptive k    k(t_s -
+//   T_b) between k_stem and k_knot               (Sec. 4.2.1) dead knots    delta' = f(tau, beta) *
+//   delta(t_s, T_b + tau, k + s tau)   (Eq. 5, Sec. 4.2.2) many knots    t = min(t_s, T_b1..T_bn) + sum_i
+//   delta'_i            (Eq. 6) colour        1D colour map at t, knots darkened, noisy outline around dead
+//   knots (Sec. 4.3)
+//
+// Every per-knot term is multiplied by a window that is exactly 0 once the distance d_b from the knot's
+// pseudo-nearest skeleton point reaches knots.reach_end x d_s, and beyond it T_b > t_s, so a knot farther
+// than that changes nothing, bit for bit. cull() uses that bound to list the knots that can reach a region.
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+#include "field/log_model.hpp"
+#include "params/parameter_schema.hpp"
+
+namespace kerf {
+
+// The knot parameters of the schema (group "knots"), in the model's terms.
+struct KnotSettings {
+  float speed = 0.16f, speedDecline = 0.06f, speedNoise = 0.25f;
+  float kStem = 1.5f, kKnot = 5.0f, kTransition = 0.3f;
+  float reachStart = 0.45f, reachEnd = 0.8f;
+  float deadInversion = -0.5f, deadTransition = 8.0f, deadSharpening = 5.0f, butterfly = 0.6f;
+  glm::vec3 darkening{0.17f, 0.18f, 0.15f};
+  float edgeSoftness = 0.15f, deadDarkening = 0.6f;
+  float outlineWidth = 0.012f, outlineShade = 0.6f, outlineNoise = 0.6f;
+
+  static KnotSettings fromParameters(const WoodParameters& params);
+};
+
+// Eq. 2, the power smooth minimum of two non-negative times; exact min(a, b) when either is 0.
+float powerSmoothMin(float a, float b, float k);
+// Eq. 3, the amount of smoothing smin - min (<= 0: the union pushes the rings outward).
+float smoothingAmount(float a, float b, float k);
+// Sec. 4.2.1: k_knot inside the knot (t_s > T_b), k_stem outside, blended smoothly over k_transition.
+float adaptiveK(float stemTime, float knotTime, const KnotSettings& s);
+// Sec. 4.2.2: the factor f on the smoothing of a dead knot, tau = stem time since death, beta = angle
+// around the knot axis (0 = horizontal, pi/2 = above). f = 1 at death, tends to dead_inversion x the
+// butterfly weight, which is 1 + butterfly above and below the knot and 1 - butterfly at its sides.
+float deadKnotFactor(float tau, float beta, const KnotSettings& s);
+// The window on a knot's terms as a function of d_b / d_s: 1 up to reach_start, 0 from reach_end on.
+float knotWindow(float ratio, const KnotSettings& s);
+
+struct KnotFieldSample {
+  float time = 0;          // the merged time t (Eq. 6): 0 at the pith, 1 at the bark
+  float stemTime = 0;      // t_s
+  float knotTime = 1e30f;  // min over knots of the (dead-adjusted) knot time
+  float darkness = 0;      // 0..1, how much of knots.darkening to subtract
+  float deadShade = 0;     // extra darkening of dead knot wood (x knots.darkening)
+  bool outline = false;    // inside the dark outline of a dead knot
+  int knotsInReach = 0;    // knots whose window was non-zero here
+};
+
+// A colour map built from the schema's ring and colour parameters (rings of growth.ring_width over
+// `radiusMm`, heartwood/sapwood colours), for logs that come without a photographed map (Sec. 4.3).
+WoodColorMap woodColorMapFromParameters(const WoodParameters& params, float radiusMm);
+
+class KnotField {
+ public:
+  KnotField(LogModel log, const KnotSettings& settings);
+
+  const LogModel& log() const { return log_; }
+  const KnotSettings& settings() const { return settings_; }
+
+  // The field at a point of the log frame (mm), evaluating the listed knots (indices into log().knots,
+  // ascending) or all of them.
+  KnotFieldSample evaluate(const glm::vec3& p, std::span<const int> knots) const;
+  KnotFieldSample evaluate(const glm::vec3& p) const { return evaluate(p, allKnots_); }
+  glm::vec3 color(const KnotFieldSample& sample, const WoodColorMap& map) const;
+
+  // Appends to `out` (ascending) those of `candidates` that may reach any point of the axis-aligned box
+  // [lo, hi] (log frame): a conservative bound, so every other knot contributes exactly nothing there.
+  void cull(const glm::vec3& lo, const glm::vec3& hi, std::span<const int> candidates,
+            std::vector<int>& out) const;
+  std::span<const int> allKnots() const { return allKnots_; }
+
+  // The tabulated noise tables, for the GLSL twin (widgets/gl/gpu_board_renderer.*): per knot
+  // kNoiseTableTimes rows (stem time 0..kNoiseTableMaxTime) of kNoiseTableAngles angles (0..2 pi).
+  static constexpr int kNoiseTableAngles = 64, kNoiseTableTimes = 64;
+  static constexpr float kNoiseTableMaxTime = 1.5f;
+  const std::vector<float>& speedNoiseTable() const { return speedNoise_; }
+  const std::vector<float>& outlineNoiseTable() const { return outlineNoise_; }
+
+ private:
+  // Per knot, the periodic noise of Sec. 4.1 (knot speed) and 4.3 (outline width) tabulated over the angle
+  // around the knot axis x the stem time, sampled bilinearly: the same noise at a fraction of the cost.
+  float noiseAt(const std::vector<float>& table, int knot, float beta, float stemTime) const;
+
+  LogModel log_;
+  KnotSettings settings_;
+  std::vector<int> allKnots_;
+  std::vector<float> speedNoise_, outlineNoise_;
+};
+
+}  // namespace kerf

@@ -1,0 +1,221 @@
+#include "fit/colour_fit.hpp"
+
+#include <ceres/ceres.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "render/wood_model.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace kerf {
+
+namespace {
+
+constexpr int kSub = 4;  // model points per sample (2 x 2)
+
+// What a sample point's colour depends on besides the fitted parameters (fixed during the fit).
+struct Sample {
+  int face = 0;
+  double pigment[kSub], year[kSub], ray[kSub];
+  double target[3];  // the photo's mean colour over the sample's cell
+};
+
+// The colour model of WoodMaterial::evaluate (core/material/wood_material.cpp), as a function of the
+// fitted parameters only, averaged over the sample's model points.
+struct ColourModel {
+  const Sample* s;
+  glm::dvec3 rayColor;
+  double rayOpacity;
+
+  template <class T>
+  void operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
+                  const T* tint, T* out) const {
+    using std::exp;
+    using std::log;
+    for (int c = 0; c < 3; ++c) out[c] = T(0);
+    for (int k = 0; k < kSub; ++k) {
+      T x = (T(s->year[k]) - (sap[0] - 0.5 * sap[1])) / sap[1];
+      if (x < T(0)) x = T(0);
+      if (x > T(1)) x = T(1);
+      const T blend = x * x * (T(3) - T(2) * x);
+      const double w = rayOpacity * s->ray[k];
+      for (int c = 0; c < 3; ++c) {
+        const T e = early[c] + blend * (sapEarly[c] - early[c]);
+        const T l = late[c] + blend * (sapLate[c] - late[c]);
+        const T beer = e * exp(T(s->pigment[k]) * log(l / e));
+        out[c] += tint[c] * ((1.0 - w) * beer + w * rayColor[c]) / double(kSub);
+      }
+    }
+  }
+};
+
+struct SampleResidual {
+  ColourModel model;
+  double weight;
+  template <class T>
+  bool operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
+                  const T* tint, T* residual) const {
+    T colour[3];
+    model(early, late, sapEarly, sapLate, sap, tint, colour);
+    for (int c = 0; c < 3; ++c) residual[c] = weight * (colour[c] - model.s->target[c]);
+    return true;
+  }
+};
+
+struct TintPrior {
+  double weight;
+  template <class T>
+  bool operator()(const T* tint, T* residual) const {
+    for (int c = 0; c < 3; ++c) residual[c] = weight * (tint[c] - T(1));
+    return true;
+  }
+};
+
+class StopCallback final : public ceres::IterationCallback {
+ public:
+  StopCallback(const Progress& p, int max) : progress_(p), max_(max) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    progress_.set(0.3 + 0.7 * std::min(1.0, (s.iteration + 1.0) / max_));
+    return progress_.stop.stop_requested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const Progress& progress_;
+  int max_;
+};
+
+glm::dvec3 toD(glm::vec3 v) {
+  return glm::dvec3(v);
+}
+
+}  // namespace
+
+ColourFitResult fitColours(const Block& block, const WoodParameters& params, const GrowthRates& rates,
+                           const std::array<Image, 6>& photos, const ColourFitOptions& options,
+                           const Progress& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (std::all_of(photos.begin(), photos.end(), [](const Image& i) { return i.empty(); }))
+    throw InputError("no face photo to fit the colours to");
+  const WoodModel model(block, params, rates);
+  const int n = std::max(2, options.samplesPerSide);
+
+  // Samples: an n x n grid of cells per face; the photo's mean colour over each cell, and the model's
+  // pigment, growth time and ray weight at 2 x 2 points inside it.
+  std::vector<Sample> samples;
+  for (FaceId face : kAllFaces) {
+    const Image& photo = photos[faceIndex(face)];
+    if (photo.empty()) continue;
+    if (photo.channels < 3)
+      throw InputError("the colour fit needs colour photos (face " + std::string(1, faceLetter(face)) +
+                       " has one channel)");
+    const std::size_t first = samples.size();
+    samples.resize(first + static_cast<std::size_t>(n) * n);
+    parallelRows(
+        n,
+        [&](int row) {
+          for (int col = 0; col < n; ++col) {
+            Sample& s = samples[first + static_cast<std::size_t>(row) * n + col];
+            s.face = faceIndex(face);
+            const int x0 = col * photo.width / n, x1 = std::max(x0 + 1, (col + 1) * photo.width / n);
+            const int y0 = row * photo.height / n, y1 = std::max(y0 + 1, (row + 1) * photo.height / n);
+            double sum[3] = {0, 0, 0};
+            for (int y = y0; y < y1; ++y)
+              for (int x = x0; x < x1; ++x)
+                for (int c = 0; c < 3; ++c) sum[c] += photo.pixel(x, y)[c];
+            const double count = static_cast<double>(x1 - x0) * (y1 - y0);
+            for (int c = 0; c < 3; ++c) s.target[c] = sum[c] / count;
+            for (int k = 0; k < kSub; ++k) {
+              const glm::vec2 at(x0 + (x1 - x0) * (0.25f + 0.5f * (k % 2)),
+                                 y0 + (y1 - y0) * (0.25f + 0.5f * (k / 2)));
+              const WoodSample w = model.evaluate(block.imageToBlock(face, at, {photo.width, photo.height}));
+              s.pigment[k] = w.pigment, s.year[k] = w.year, s.ray[k] = w.ray;
+            }
+          }
+        },
+        progress);
+  }
+  progress.set(0.3);
+
+  double early[3], late[3], sapEarly[3], sapLate[3], sap[2], tint[6][3];
+  const auto load = [](const glm::vec3& v, double* out) { out[0] = v.x, out[1] = v.y, out[2] = v.z; };
+  load(params.earlywoodColor, early), load(params.latewoodColor, late);
+  load(params.sapwoodEarlywoodColor, sapEarly), load(params.sapwoodLatewoodColor, sapLate);
+  sap[0] = params.sapwoodStart, sap[1] = params.sapwoodTransition;
+  glm::vec3 WoodParameters::*const tints[6] = {&WoodParameters::faceTintA, &WoodParameters::faceTintB,
+                                               &WoodParameters::faceTintC, &WoodParameters::faceTintD,
+                                               &WoodParameters::faceTintE, &WoodParameters::faceTintF};
+  for (int f = 0; f < 6; ++f) load(params.*tints[f], tint[f]);
+
+  const glm::dvec3 rayColor = toD(params.rayColor);
+  const auto l1PerFace = [&](std::array<double, 6>& out) {
+    std::array<double, 6> count{};
+    out.fill(0.0);
+    for (const Sample& s : samples) {
+      double colour[3];
+      ColourModel{&s, rayColor, params.rayOpacity}(early, late, sapEarly, sapLate, sap, tint[s.face], colour);
+      for (int c = 0; c < 3; ++c)
+        out[s.face] += std::abs(std::clamp(colour[c], 0.0, 1.0) - s.target[c]) / 3.0;
+      count[s.face] += 1;
+    }
+    for (int f = 0; f < 6; ++f) out[f] = count[f] > 0 ? out[f] / count[f] : 0.0;
+  };
+  ColourFitResult result;
+  l1PerFace(result.l1Before);
+
+  ceres::Problem problem;
+  const double weight = 1.0 / std::sqrt(static_cast<double>(samples.size()));
+  for (const Sample& s : samples)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SampleResidual, 3, 3, 3, 3, 3, 2, 3>(
+                                 new SampleResidual{{&s, rayColor, params.rayOpacity}, weight}),
+                             new ceres::SoftLOneLoss(options.robustScale * weight), early, late, sapEarly,
+                             sapLate, sap, tint[s.face]);
+  for (int f = 0; f < 6; ++f) {
+    if (photos[f].empty()) continue;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<TintPrior, 3, 3>(new TintPrior{std::sqrt(options.tintWeight / 18.0)}),
+        nullptr, tint[f]);
+    for (int c = 0; c < 3; ++c) {
+      problem.SetParameterLowerBound(tint[f], c, 0.0);
+      problem.SetParameterUpperBound(tint[f], c, 4.0);
+    }
+  }
+  for (double* colour : {early, late, sapEarly, sapLate})
+    for (int c = 0; c < 3; ++c) {
+      problem.SetParameterLowerBound(colour, c, 0.005);
+      problem.SetParameterUpperBound(colour, c, 1.0);
+    }
+  problem.SetParameterLowerBound(sap, 0, 0.0);
+  problem.SetParameterUpperBound(sap, 0, 2000.0);
+  problem.SetParameterLowerBound(sap, 1, 0.01);
+  problem.SetParameterUpperBound(sap, 1, 200.0);
+  if (!options.fitSapwood) problem.SetParameterBlockConstant(sap);
+
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;  // 32 parameters
+  so.max_num_iterations = options.maxIterations;
+  so.num_threads = 1;  // deterministic
+  StopCallback callback(progress, options.maxIterations);
+  so.callbacks.push_back(&callback);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  progress.throwIfCancelled();
+
+  l1PerFace(result.l1After);
+  WoodParameters out = params;
+  const auto store = [](const double* v) { return glm::vec3(v[0], v[1], v[2]); };
+  out.earlywoodColor = store(early), out.latewoodColor = store(late);
+  out.sapwoodEarlywoodColor = store(sapEarly), out.sapwoodLatewoodColor = store(sapLate);
+  out.sapwoodStart = static_cast<float>(sap[0]), out.sapwoodTransition = static_cast<float>(sap[1]);
+  for (int f = 0; f < 6; ++f) out.*tints[f] = store(tint[f]);
+  validate(out);
+  result.params = out;
+  result.samples = static_cast<int>(samples.size());
+  result.iterations = static_cast<int>(summary.iterations.size());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace kerf

@@ -1,0 +1,49 @@
+#pragma once
+// Colour initialisation (Mokume Sec. 5.3.1 / A.2.3, the third stage of the authors' fit): given the
+// fitted growth field and the texture's detail, the colours of the wood and of each photographed face
+// are fitted to the face photos with a robust L1-like loss.
+//
+// Kerf's colour model has the parameters of the one schema (not the authors' free 128-entry colour bar):
+// heartwood and sapwood earlywood/latewood colours, the heart-to-sapwood radius and blend, and a colour
+// multiplier per face (faces.tint_*). Everything else the colour depends on - the pigment concentration t
+// of Beer's law (season, ring-to-ring variation, mottling, fibres, pores), the growth time and the rays -
+// does not depend on these parameters, so it is evaluated once per sample point, and the fit itself
+// (Ceres, automatic differentiation, soft-L1) only re-mixes colours: colour = tint_face * mix(E (L/E)^t,
+// ray colour, ray opacity * ray), E and L blended from heartwood to sapwood by the growth time.
+// The face tints and the wood colours trade off (a brighter wood under darker tints looks the same); a
+// weak penalty on (tint - 1)^2 fixes that scale, as the authors' 10 * mean(face_cols^2) does beside their
+// L1 term (Kerf's data term is squared, hence the smaller weight).
+#include <array>
+
+#include "field/growth_rates.hpp"
+#include "geometry/block.hpp"
+#include "io/image.hpp"
+#include "params/parameter_schema.hpp"
+#include "util/progress.hpp"
+
+namespace kerf {
+
+struct ColourFitOptions {
+  int samplesPerSide = 32;  // sample points per face side (each the mean of 2 x 2 model points)
+  int maxIterations = 50;
+  double robustScale = 0.05;  // soft-L1 scale, colour units (0..1)
+  double tintWeight = 0.02;   // only fixes the scale between wood colours and tints
+  bool fitSapwood = true;     // the heart-to-sapwood radius and blend (needs both on the faces)
+};
+
+struct ColourFitResult {
+  WoodParameters params;  // the input with color.* (earlywood, latewood, sapwood pair, sapwood start and
+                          // blend) and faces.tint_* replaced
+  std::array<double, 6> l1Before{}, l1After{};  // mean |model - photo| per face (colour units, 0..1);
+                                                // 0 where a face has no photo
+  int samples = 0;
+  int iterations = 0;
+  double seconds = 0;
+};
+
+// photos: A..F, empty faces are skipped. Throws InputError without any photo, Cancelled on request.
+ColourFitResult fitColours(const Block& block, const WoodParameters& params, const GrowthRates& rates,
+                           const std::array<Image, 6>& photos, const ColourFitOptions& options = {},
+                           const Progress& progress = {});
+
+}  // namespace kerf

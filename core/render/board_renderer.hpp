@@ -1,0 +1,65 @@
+#pragma once
+// Boards cut from a log, rendered on the CPU with the knot model (field/knot_field.hpp, docs/knots.md).
+//
+// A board is a block (Kerf block frame: x = width, y = length, z = thickness, docs/coordinates.md) placed in
+// the log frame: with no rotation its length runs up the log (board +y = log +z), its width along log +x and
+// its face A (board +z) looks towards log -y. Rotations, in degrees, turn it about its own axes: first rz
+// about its thickness axis, then rx about its width axis, then ry about the log axis:
+//   p_log = centre + Base * Ry(ry) * Rx(rx) * Rz(rz) * p_board.
+// Rendering culls knots per board and per tile: only the knots that can reach a tile are evaluated there.
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+#include <string>
+
+#include "field/knot_field.hpp"
+#include "geometry/block.hpp"
+#include "io/image.hpp"
+#include "util/progress.hpp"
+
+namespace kerf {
+
+struct Board {
+  glm::vec3 center{0.0f};                 // log frame, mm
+  glm::vec3 size{100.0f, 100.0f, 40.0f};  // width, length, thickness, mm
+  glm::vec3 rotationDeg{0.0f};            // rx, ry, rz (see above)
+
+  glm::mat3 axes() const;  // columns: the board's x, y, z axes in the log frame
+  glm::vec3 toLog(const glm::vec3& boardPoint) const { return center + axes() * boardPoint; }
+  Block block() const { return Block(size); }
+};
+
+// "cx,cy,cz,sx,sy,sz[,rx,ry,rz]" (mm, degrees); throws InputError with the expected form.
+Board parseBoard(const std::string& text);
+std::string formatBoard(const Board& board);
+
+// A flat-sawn board through the knottiest section of the log: 110 x 110 x 30 mm, its face A tangent to
+// the rings at `faceDistanceMm` from the pith, turned to face the most knots of that section.
+Board defaultBoard(const LogModel& log, float faceDistanceMm = 30.0f);
+
+// A flat-sawn board whose face A (looking towards the pith) lies at `faceDistanceMm` from the pith across
+// the given knot's direction there, centred on the knot: the knot is cut across its axis.
+Board boardAcrossKnot(const LogModel& log, int knot, float faceDistanceMm, glm::vec3 size);
+// A board whose face A is the radial plane through the pith and the given knot's axis (the knot is cut
+// along its length), the face spanning from the pith outward.
+Board boardAlongKnot(const LogModel& log, int knot, glm::vec3 size);
+
+struct BoardRenderOptions {
+  FaceId face = FaceId::A;
+  int resolution = 1200;  // pixels along the face's longer side
+  bool cull = true;       // false: evaluate every knot at every pixel (the reference for the culling test)
+  int tileSize = 16;      // pixels per tile side for the per-tile culling
+};
+
+struct BoardRenderStats {
+  int boardKnots = 0;           // knots that survive the per-board culling
+  double meanTileKnots = 0;     // mean knots per tile after per-tile culling
+  double meanKnotsInReach = 0;  // mean knots per pixel whose window was non-zero
+  std::size_t pixels = 0;
+};
+
+// The face of `board` as an RGB image, `options.resolution` pixels along its longer side.
+Image renderBoardFace(const KnotField& field, const WoodColorMap& colors, const Board& board,
+                      const BoardRenderOptions& options, BoardRenderStats* stats = nullptr,
+                      const Progress& progress = {});
+
+}  // namespace kerf

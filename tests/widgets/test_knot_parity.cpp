@@ -1,0 +1,192 @@
+// CPU/GPU parity of the knot model: the GLSL twin (shaders/knots.glsl, widgets/gl/gpu_board_renderer.*)
+// against core's renderBoardFace, on the three golden boards of tests/core/test_knot_render.cpp (boards
+// cut from the CT-measured spruce log), on a random log with a rotated board, and without culling.
+#include <QGuiApplication>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QtTest>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "gl/gpu_board_renderer.hpp"
+#include "io/log_data_import.hpp"
+
+using namespace kerf;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Both sides compute in 32-bit floats, in the same order, from the same tables (the knot noise is core's
+// own table), so they differ only where llvmpipe's sqrt/atan/sin/cos/pow/exp differ from libm by an ulp or
+// so. Measured on Mesa llvmpipe (docs/knots.md): mean |difference| 5e-7 .. 3.6e-6, max 0.0014, no channel
+// over 0.01. The limits leave room for another GPU's transcendentals and for a few pixels where the dead
+// knot outline (a yes/no threshold) or a window edge flips.
+constexpr double kMaxMeanAbs = 5e-5;
+constexpr float kPixelTolerance = 0.01f;
+constexpr double kMaxShareOver = 5e-4;
+
+fs::path granFolder() {
+  return fs::path(KERF_SHARED_DIR) / "data" / "logs" / "spruce-gran1";
+}
+
+// The knot that dies nearest the pith among those that die well inside the log (as test_knot_render.cpp).
+int earlyDeadKnot(const LogModel& log) {
+  int best = -1;
+  for (int k = 0; k < static_cast<int>(log.knots.size()); ++k) {
+    const Knot& knot = log.knots[k];
+    if (knot.deathDistance < 30.0f || knot.heights[0] < 300.0f || knot.heights[0] > 3700.0f) continue;
+    if (best < 0 || knot.deathDistance < log.knots[best].deathDistance) best = k;
+  }
+  return best;
+}
+
+double maxAbsDifference(const Image& a, const Image& b) {
+  double m = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    m = std::max(m, std::abs(double(a.pixels[i]) - b.pixels[i]));
+  return m;
+}
+
+}  // namespace
+
+class KnotParityTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    context_ = std::make_unique<QOpenGLContext>();
+    context_->setFormat(format);
+    QVERIFY2(context_->create(), "no OpenGL 3.3 core context (run under xvfb-run with Mesa)");
+    surface_ = std::make_unique<QOffscreenSurface>();
+    surface_->setFormat(context_->format());
+    surface_->create();
+    QVERIFY(context_->makeCurrent(surface_.get()));
+    qInfo() << "OpenGL renderer:"
+            << reinterpret_cast<const char*>(context_->functions()->glGetString(GL_RENDERER));
+    try {
+      renderer_ = std::make_unique<GpuBoardRenderer>();
+    } catch (const std::exception& e) {
+      QFAIL(e.what());
+    }
+  }
+
+  void cleanupTestCase() {
+    renderer_.reset();
+    context_->doneCurrent();
+  }
+
+  void flatSawnBoardThroughKnots() {
+    if (!gran()) QSKIP("the spruce log (shared/data) is absent");
+    compareBoard(*gran(), gran()->colorMap, defaultBoard(*gran()), 320, "knots_flat_sawn");
+  }
+
+  // All 108 knots uploaded (no culling): the knot tables and the noise texture span several rows.
+  void unculledSpruceBoard() {
+    if (!gran()) QSKIP("the spruce log (shared/data) is absent");
+    const KnotField field(*gran(), KnotSettings{});
+    BoardRenderOptions culled, all;
+    culled.resolution = all.resolution = 160;
+    all.cull = false;
+    BoardRenderStats stats;
+    const Image cpu = renderBoardFace(field, gran()->colorMap, defaultBoard(*gran()), culled);
+    const Image gpu = renderer_->render(field, gran()->colorMap, defaultBoard(*gran()), all, &stats);
+    QCOMPARE(stats.boardKnots, 108);
+    const ImageDifference d = compareImages(cpu, gpu, kPixelTolerance);
+    qInfo() << "unculled spruce board: mean abs" << d.meanAbs << "max abs" << maxAbsDifference(cpu, gpu);
+    QVERIFY(d.meanAbs < kMaxMeanAbs);
+    QVERIFY(d.shareOverTolerance < kMaxShareOver);
+  }
+
+  void boardAlongKnotAxis() {
+    if (!gran()) QSKIP("the spruce log (shared/data) is absent");
+    compareBoard(*gran(), gran()->colorMap, boardAlongKnot(*gran(), 40, {130.0f, 130.0f, 30.0f}), 320,
+                 "knots_along_axis");
+  }
+
+  void deadKnotWithButterfly() {
+    if (!gran()) QSKIP("the spruce log (shared/data) is absent");
+    const int knot = earlyDeadKnot(*gran());
+    QVERIFY(knot >= 0);
+    const float distance = gran()->knots[knot].deathDistance + 25.0f;
+    const BoardRenderStats stats = compareBoard(
+        *gran(), gran()->colorMap, boardAcrossKnot(*gran(), knot, distance, {80.0f, 80.0f, 20.0f}), 320,
+        "knots_dead_butterfly");
+    QVERIFY2(stats.meanKnotsInReach > 0.1, "the dead knot board should have knots in reach");
+  }
+
+  // A random log (colour map from the parameters), a rotated board, another face, non-default settings,
+  // and the unculled path: the culling lists must not change the GPU's picture either.
+  void randomLogRotatedBoard() {
+    const LogModel log = generateRandomLog({.seed = 5});
+    const WoodColorMap colors = woodColorMapFromParameters(WoodParameters{}, log.stem.maxRadius());
+    Board board = defaultBoard(log);
+    board.rotationDeg = {12.0f, 20.0f, 7.0f};
+    KnotSettings settings;
+    settings.butterfly = 0.9f, settings.deadInversion = -0.8f, settings.outlineWidth = 0.02f;
+    compareBoard(log, colors, board, 200, "knots_random_rotated", settings, FaceId::C);
+    const KnotField field(log, settings);
+    BoardRenderOptions culled, all;
+    culled.resolution = all.resolution = 160;
+    all.cull = false;
+    const Image a = renderer_->render(field, colors, board, culled);
+    const Image b = renderer_->render(field, colors, board, all);
+    QCOMPARE(maxAbsDifference(a, b), 0.0);
+  }
+
+ private:
+  static const LogModel* gran() {
+    static const std::optional<LogModel> log = []() -> std::optional<LogModel> {
+      if (!fs::exists(granFolder() / "Gran_1_knots.json")) return std::nullopt;
+      return loadLog(granFolder());
+    }();
+    return log ? &*log : nullptr;
+  }
+
+  BoardRenderStats compareBoard(const LogModel& log, const WoodColorMap& colors, const Board& board,
+                                int resolution, const QString& name, const KnotSettings& settings = {},
+                                FaceId face = FaceId::A) {
+    const KnotField field(log, settings);
+    BoardRenderOptions options;
+    options.resolution = resolution;
+    options.face = face;
+    BoardRenderStats cpuStats, gpuStats;
+    const Image cpu = renderBoardFace(field, colors, board, options, &cpuStats);
+    const Image gpu = renderer_->render(field, colors, board, options, &gpuStats);
+    [&] {
+      QCOMPARE(gpu.width, cpu.width);
+      QCOMPARE(gpu.height, cpu.height);
+      QCOMPARE(gpu.channels, cpu.channels);
+      QCOMPARE(gpuStats.boardKnots, cpuStats.boardKnots);
+      QCOMPARE(gpuStats.meanTileKnots, cpuStats.meanTileKnots);
+      // The count of knots in reach per pixel decides which knots take part: it must match almost exactly.
+      QVERIFY2(std::abs(gpuStats.meanKnotsInReach - cpuStats.meanKnotsInReach) < 1e-3,
+               qPrintable(QString("knots in reach: cpu %1 gpu %2")
+                              .arg(cpuStats.meanKnotsInReach)
+                              .arg(gpuStats.meanKnotsInReach)));
+      const QString dir = QStringLiteral(KERF_TEST_ARTIFACTS);
+      writeImage((dir + "/parity_" + name + "_cpu.png").toStdString(), cpu);
+      writeImage((dir + "/parity_" + name + "_gpu.png").toStdString(), gpu);
+      const ImageDifference d = compareImages(cpu, gpu, kPixelTolerance);
+      qInfo().noquote() << name << "board knots" << cpuStats.boardKnots << "in reach/pixel"
+                        << cpuStats.meanKnotsInReach << "mean abs" << d.meanAbs << "max abs"
+                        << maxAbsDifference(cpu, gpu) << "share over" << kPixelTolerance
+                        << d.shareOverTolerance;
+      QVERIFY2(d.meanAbs < kMaxMeanAbs, qPrintable(name + " mean difference too large"));
+      QVERIFY2(d.shareOverTolerance < kMaxShareOver, qPrintable(name + " too many differing pixels"));
+    }();
+    return cpuStats;
+  }
+
+  std::unique_ptr<QOpenGLContext> context_;
+  std::unique_ptr<QOffscreenSurface> surface_;
+  std::unique_ptr<GpuBoardRenderer> renderer_;
+};
+
+QTEST_MAIN(KnotParityTest)
+#include "test_knot_parity.moc"
