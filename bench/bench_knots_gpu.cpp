@@ -7,9 +7,6 @@
 //
 // Needs ../shared/data/logs/spruce-gran1 and an OpenGL 3.3 core context (docs/performance.md).
 #include <QGuiApplication>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -18,6 +15,7 @@
 #include <vector>
 
 #include "gl/gpu_board_renderer.hpp"
+#include "gl/offscreen_gl_context.hpp"
 #include "io/log_data_import.hpp"
 #include "util/resource_usage.hpp"
 
@@ -46,16 +44,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   QGuiApplication app(argc, argv);
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  QOpenGLContext context;
-  context.setFormat(format);
-  QOffscreenSurface surface;
-  surface.setFormat(format);
-  surface.create();
-  if (!context.create() || !context.makeCurrent(&surface)) {
-    std::fprintf(stderr, "no OpenGL 3.3 core context (run under xvfb-run)\n");
+  kerf::OffscreenGlContext context;
+  if (const std::string error = context.makeCurrent(); !error.empty()) {
+    std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
   const kerf::LogModel log = kerf::loadLog(folder);
@@ -82,7 +73,7 @@ int main(int argc, char** argv) {
         readback.push_back(t.readback);
     if (image.width != 1200) return 1;
   }
-  std::printf("renderer: %s\n", reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER)));
+  std::printf("renderer: %s\n", context.renderer().c_str());
   std::printf("board %s, %zu px, knots: log=%zu board=%d per-tile=%.2f per-pixel-in-reach=%.2f%s\n",
               kerf::formatBoard(board).c_str(), stats.pixels, log.knots.size(), stats.boardKnots,
               stats.meanTileKnots, stats.meanKnotsInReach, cull ? "" : " (no culling)");

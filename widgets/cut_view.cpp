@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include "gl/gl_helpers.hpp"
 #include "gl/wood_program.hpp"
 
 namespace kerf {
@@ -29,10 +30,6 @@ QString mm(double value, int decimals) {
 constexpr double kRulerPx = 22;      // thickness of the ruler bands
 constexpr double kFitMarginPx = 16;  // around the cut when fitting
 constexpr double kZoomStep = 1.25;   // one wheel notch or key press
-
-QVector3D toQt(glm::vec3 v) {
-  return {v.x, v.y, v.z};
-}
 
 // The plane's intersection with the block as a convex polygon in plane coordinates, counter-clockwise.
 std::vector<glm::vec2> cutPolygon(const CutPlane& plane, const Block& block) {

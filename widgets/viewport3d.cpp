@@ -16,14 +16,11 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl/gl_helpers.hpp"
 #include "gl/wood_program.hpp"
 
 namespace kerf {
 namespace {
-
-QVector3D toQt(glm::vec3 v) {
-  return {v.x, v.y, v.z};
-}
 
 QPointF toPoint(glm::vec3 projected) {
   return {projected.x, projected.y};

@@ -13,24 +13,14 @@
 #include "io/face_photo_rectify.hpp"
 #include "io/image.hpp"
 #include "util/error.hpp"
+#include "util/number_list.hpp"
 
 namespace kerf::cli {
 namespace {
 
 std::vector<float> parseNumbers(const std::string& text, std::size_t count, const std::string& option,
                                 const std::string& meaning) {
-  std::istringstream in(text);
-  std::vector<float> v;
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stof(item, &used));
-      if (used != item.size() || !std::isfinite(v.back())) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError(option + ": \"" + item + "\" is not a number");
-    }
-  }
+  const std::vector<float> v = parseNumberList(text, option);
   if (v.size() != count)
     throw InputError(option + " takes " + std::to_string(count) + " numbers: " + meaning + " (got " +
                      std::to_string(v.size()) + ")");

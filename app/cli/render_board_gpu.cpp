@@ -1,14 +1,12 @@
 #include "render_board_gpu.hpp"
 
 #include <QGuiApplication>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
 
 #include "gl/gpu_board_renderer.hpp"
+#include "gl/offscreen_gl_context.hpp"
 #include "util/error.hpp"
 #include "util/resource_usage.hpp"
 
@@ -39,23 +37,11 @@ Image renderBoardOnGpu(const KnotField& field, const WoodColorMap& colors, const
   static char name[] = "kerf-cli";
   static char* argv[] = {name, nullptr};
   QGuiApplication app(argc, argv);
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  QOpenGLContext context;
-  context.setFormat(format);
-  QOffscreenSurface surface;
-  surface.setFormat(format);
-  surface.create();
-  if (!context.create() || !context.makeCurrent(&surface)) {
-    throw InputError(std::string("--gpu: cannot create an OpenGL 3.3 core context: ") + kHint);
+  OffscreenGlContext context;
+  if (const std::string error = context.makeCurrent(); !error.empty()) {
+    throw InputError("--gpu: " + error + ": " + kHint);
   }
-  const auto version = context.format().version();
-  if (version < qMakePair(3, 3)) {
-    throw InputError("--gpu: the OpenGL context is version " + std::to_string(version.first) + "." +
-                     std::to_string(version.second) + ", 3.3 is needed");
-  }
-  report.renderer = reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
+  report.renderer = context.renderer();
   try {
     GpuBoardRenderer renderer;
     report.setup = setupWatch.seconds();

@@ -10,6 +10,7 @@
 #include "render/renderers.hpp"
 #include "render/unfolded_cross.hpp"
 #include "util/error.hpp"
+#include "util/number_list.hpp"
 
 namespace fs = std::filesystem;
 
@@ -17,18 +18,7 @@ namespace kerf::cli {
 namespace {
 
 CutPlane parsePlane(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<float> v;
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stof(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError("--plane: \"" + item + "\" is not a number");
-    }
-  }
+  const std::vector<float> v = parseNumberList(text, "--plane");
   if (v.size() != 6)
     throw InputError("--plane takes 6 numbers: px,py,pz,nx,ny,nz (a point and a normal, block mm)");
   return CutPlane({v[0], v[1], v[2]}, {v[3], v[4], v[5]});

@@ -1,14 +1,15 @@
 #pragma once
 // The time field of a log with knots, Larsson et al. 2022 Sec. 4.1-4.3 (docs/knots.md):
-//
-//   stem time     t_s = d_s / r_s(z, azimuth)                         (Eq. 1, pseudo-nearest point at equal
-//   z) knot time     T_b = d_b / v_b(beta, t_s)                          (Eq. 1, pseudo-nearest point at
-//   equal d) smooth min    smin(a, b, k) = (a^k b^k / (a^k + b^k))^(1/k)        (Eq. 2) smoothing     delta =
-//   smin - min                                   (Eq. 3), smin' = min + delta' (Eq. 4) adaptive k    k(t_s -
-//   T_b) between k_stem and k_knot               (Sec. 4.2.1) dead knots    delta' = f(tau, beta) *
-//   delta(t_s, T_b + tau, k + s tau)   (Eq. 5, Sec. 4.2.2) many knots    t = min(t_s, T_b1..T_bn) + sum_i
-//   delta'_i            (Eq. 6) colour        1D colour map at t, knots darkened, noisy outline around dead
-//   knots (Sec. 4.3)
+// clang-format off
+//   stem time    t_s = d_s / r_s(z, azimuth)              (Eq. 1, pseudo-nearest point at equal z)
+//   knot time    T_b = d_b / v_b(beta, t_s)               (Eq. 1, pseudo-nearest point at equal d)
+//   smooth min   smin(a, b, k) = (a^k b^k / (a^k + b^k))^(1/k)                         (Eq. 2)
+//   smoothing    delta = smin - min (Eq. 3), smin' = min + delta'                      (Eq. 4)
+//   adaptive k   k(t_s - T_b) between k_stem and k_knot                           (Sec. 4.2.1)
+//   dead knots   delta' = f(tau, beta) * delta(t_s, T_b + tau, k + s tau)  (Eq. 5, Sec. 4.2.2)
+//   many knots   t = min(t_s, T_b1..T_bn) + sum_i delta'_i                             (Eq. 6)
+//   colour       1D colour map at t, knots darkened, noisy outline around dead knots (Sec. 4.3)
+// clang-format on
 //
 // Every per-knot term is multiplied by a window that is exactly 0 once the distance d_b from the knot's
 // pseudo-nearest skeleton point reaches knots.reach_end x d_s, and beyond it T_b > t_s, so a knot farther

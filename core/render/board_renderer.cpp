@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "util/error.hpp"
+#include "util/number_list.hpp"
 #include "util/parallel.hpp"
 
 namespace kerf {
@@ -63,20 +64,7 @@ glm::mat3 Board::axes() const {
 }
 
 Board parseBoard(const std::string& text) {
-  std::vector<float> v;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stof(item, &used));
-      if (used != item.size() && item.find_first_not_of(" ", used) != std::string::npos)
-        throw std::invalid_argument("");
-    } catch (const std::exception&) {
-      v.clear();
-      break;
-    }
-  }
+  const std::vector<float> v = parseNumberList(text, "--board");
   if (v.size() != 6 && v.size() != 9) {
     throw InputError(
         "--board takes 6 or 9 numbers: cx,cy,cz,sx,sy,sz[,rx,ry,rz] (centre in the log frame, "
@@ -88,11 +76,6 @@ Board parseBoard(const std::string& text) {
   b.size = glm::vec3(v[3], v[4], v[5]);
   if (v.size() == 9) b.rotationDeg = glm::vec3(v[6], v[7], v[8]);
   if (!(b.size.x > 0 && b.size.y > 0 && b.size.z > 0)) throw InputError("--board: the size must be positive");
-  for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(b.center[i]) || !std::isfinite(b.size[i]) || !std::isfinite(b.rotationDeg[i])) {
-      throw InputError("--board: every number must be finite");
-    }
-  }
   return b;
 }
 
@@ -147,26 +130,25 @@ Board boardAlongKnot(const LogModel& log, int knot, glm::vec3 size) {
   return b;
 }
 
-Image renderBoardFace(const KnotField& field, const WoodColorMap& colors, const Board& board,
-                      const BoardRenderOptions& options, BoardRenderStats* stats, const Progress& progress) {
+BoardFaceLayout layoutBoardFace(const KnotField& field, const Board& board,
+                                const BoardRenderOptions& options) {
   if (options.resolution < 1) throw InputError("the resolution must be at least 1 pixel");
+  BoardFaceLayout layout;
   const Block block = board.block();
   const FaceFrame frame = block.face(options.face);
   const float pxPerMm = static_cast<float>(options.resolution) / std::max(frame.widthMm, frame.heightMm);
-  const glm::ivec2 size = block.faceImageSize(options.face, pxPerMm);
-  Image image(size.x, size.y, 3);
+  layout.size = block.faceImageSize(options.face, pxPerMm);
   const glm::mat3 axes = board.axes();
-  // The face is flat: the log point is affine in the image position (one corner plus two steps).
-  const glm::vec3 origin = board.center + axes * block.imageToBlock(options.face, glm::vec2(0.0f), size);
-  const glm::vec3 stepX =
-      board.center + axes * block.imageToBlock(options.face, glm::vec2(1.0f, 0.0f), size) - origin;
-  const glm::vec3 stepY =
-      board.center + axes * block.imageToBlock(options.face, glm::vec2(0.0f, 1.0f), size) - origin;
-  auto toLog = [&](glm::vec2 imagePos) { return origin + imagePos.x * stepX + imagePos.y * stepY; };
+  auto logPoint = [&](glm::vec2 imagePos) {
+    return board.center + axes * block.imageToBlock(options.face, imagePos, layout.size);
+  };
+  layout.origin = logPoint(glm::vec2(0.0f));
+  layout.stepX = logPoint(glm::vec2(1.0f, 0.0f)) - layout.origin;
+  layout.stepY = logPoint(glm::vec2(0.0f, 1.0f)) - layout.origin;
 
-  // Per board: the knots that can reach any point of the board.
-  std::vector<int> boardKnots;
-  {
+  // Per board: the knots that can reach any point of the board (the box around its 8 corners).
+  layout.cull = options.cull;
+  if (options.cull) {
     glm::vec3 lo(1e30f), hi(-1e30f);
     const glm::vec3 h = block.halfSize();
     for (int c = 0; c < 8; ++c) {
@@ -175,41 +157,57 @@ Image renderBoardFace(const KnotField& field, const WoodColorMap& colors, const 
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
-    if (options.cull) {
-      field.cull(lo, hi, field.allKnots(), boardKnots);
-    } else {
-      boardKnots.assign(field.allKnots().begin(), field.allKnots().end());
-    }
+    field.cull(lo, hi, field.allKnots(), layout.boardKnots);
+  } else {
+    layout.boardKnots.assign(field.allKnots().begin(), field.allKnots().end());
   }
+  layout.tile = std::max(options.tileSize, 1);
+  layout.tilesX = (layout.size.x + layout.tile - 1) / layout.tile;
+  layout.tilesY = (layout.size.y + layout.tile - 1) / layout.tile;
+  return layout;
+}
 
-  const int tile = std::max(options.tileSize, 1);
-  const int tilesX = (size.x + tile - 1) / tile, tilesY = (size.y + tile - 1) / tile;
+glm::ivec4 BoardFaceLayout::tilePixels(int tx, int ty) const {
+  const int x0 = tx * tile, y0 = ty * tile;
+  return {x0, y0, std::min(x0 + tile, size.x), std::min(y0 + tile, size.y)};
+}
+
+void BoardFaceLayout::tileKnots(const KnotField& field, int tx, int ty, std::vector<int>& out) const {
+  out.clear();
+  if (!cull) {
+    out = boardKnots;
+    return;
+  }
+  // The box around the tile's four corners (the tile is a flat rectangle), padded against rounding.
+  const glm::ivec4 r = tilePixels(tx, ty);
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (int c = 0; c < 4; ++c) {
+    const glm::vec3 p = toLog(glm::vec2((c & 1) ? r.z : r.x, (c & 2) ? r.w : r.y));
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  field.cull(lo - glm::vec3(1e-3f), hi + glm::vec3(1e-3f), boardKnots, out);
+}
+
+Image renderBoardFace(const KnotField& field, const WoodColorMap& colors, const Board& board,
+                      const BoardRenderOptions& options, BoardRenderStats* stats, const Progress& progress) {
+  const BoardFaceLayout layout = layoutBoardFace(field, board, options);
+  const glm::ivec2 size = layout.size;
+  Image image(size.x, size.y, 3);
   std::atomic<long long> tileKnotSum{0}, inReachSum{0};
   parallelRows(
-      tilesY,
+      layout.tilesY,
       [&](int ty) {
-        std::vector<int> tileKnots;
+        std::vector<int> knots;
         long long knotSum = 0, reachSum = 0;
-        for (int tx = 0; tx < tilesX; ++tx) {
-          const int x0 = tx * tile, y0 = ty * tile;
-          const int x1 = std::min(x0 + tile, size.x), y1 = std::min(y0 + tile, size.y);
-          std::span<const int> knots = boardKnots;
-          if (options.cull) {
-            // Per tile: the box around the tile's four corners (the tile is a flat rectangle).
-            glm::vec3 lo(1e30f), hi(-1e30f);
-            for (int c = 0; c < 4; ++c) {
-              const glm::vec3 p = toLog(glm::vec2((c & 1) ? x1 : x0, (c & 2) ? y1 : y0));
-              lo = glm::min(lo, p);
-              hi = glm::max(hi, p);
-            }
-            tileKnots.clear();
-            field.cull(lo - glm::vec3(1e-3f), hi + glm::vec3(1e-3f), boardKnots, tileKnots);
-            knots = tileKnots;
-          }
+        for (int tx = 0; tx < layout.tilesX; ++tx) {
+          layout.tileKnots(field, tx, ty, knots);
+          const glm::ivec4 r = layout.tilePixels(tx, ty);
+          const int x0 = r.x, y0 = r.y, x1 = r.z, y1 = r.w;
           knotSum += static_cast<long long>(knots.size());
           for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
-              const KnotFieldSample s = field.evaluate(toLog(glm::vec2(x + 0.5f, y + 0.5f)), knots);
+              const KnotFieldSample s = field.evaluate(layout.toLog(glm::vec2(x + 0.5f, y + 0.5f)), knots);
               reachSum += s.knotsInReach;
               const glm::vec3 c = field.color(s, colors);
               float* px = image.pixel(x, y);
@@ -222,9 +220,10 @@ Image renderBoardFace(const KnotField& field, const WoodColorMap& colors, const 
       },
       progress);
   if (stats) {
-    stats->boardKnots = static_cast<int>(boardKnots.size());
+    stats->boardKnots = static_cast<int>(layout.boardKnots.size());
     stats->pixels = static_cast<std::size_t>(size.x) * size.y;
-    stats->meanTileKnots = static_cast<double>(tileKnotSum) / (static_cast<double>(tilesX) * tilesY);
+    stats->meanTileKnots =
+        static_cast<double>(tileKnotSum) / (static_cast<double>(layout.tilesX) * layout.tilesY);
     stats->meanKnotsInReach = static_cast<double>(inReachSum) / static_cast<double>(stats->pixels);
   }
   return image;

@@ -57,6 +57,25 @@ struct BoardRenderStats {
   std::size_t pixels = 0;
 };
 
+// Where a board face's pixels lie in the log and which knots can reach them: computed once and shared by
+// the CPU renderer and its GLSL twin (widgets/gl/gpu_board_renderer.*), so both sample the same points
+// and keep the same knots.
+struct BoardFaceLayout {
+  glm::ivec2 size{0};                       // pixels
+  glm::vec3 origin{0}, stepX{0}, stepY{0};  // the face is flat: log point = origin + x stepX + y stepY
+  std::vector<int> boardKnots;  // the knots that can reach the board (all of them without culling)
+  int tile = 16, tilesX = 0, tilesY = 0;
+  bool cull = true;
+
+  glm::vec3 toLog(glm::vec2 imagePos) const { return origin + imagePos.x * stepX + imagePos.y * stepY; }
+  // The pixel range [x0, x1) x [y0, y1) of tile (tx, ty).
+  glm::ivec4 tilePixels(int tx, int ty) const;
+  // Replaces `out` by those of boardKnots that can reach tile (tx, ty) (all of them without culling).
+  void tileKnots(const KnotField& field, int tx, int ty, std::vector<int>& out) const;
+};
+BoardFaceLayout layoutBoardFace(const KnotField& field, const Board& board,
+                                const BoardRenderOptions& options);
+
 // The face of `board` as an RGB image, `options.resolution` pixels along its longer side.
 Image renderBoardFace(const KnotField& field, const WoodColorMap& colors, const Board& board,
                       const BoardRenderOptions& options, BoardRenderStats* stats = nullptr,

@@ -3,6 +3,7 @@
 // build/tests/core/test_core --gtest_filter='Golden*' and look at them).
 #include <gtest/gtest.h>
 
+#include "spruce_log.hpp"
 #include "test_files.hpp"
 
 #include <cmath>
@@ -19,17 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path granFolder() {
-  return fs::path(KERF_SHARED_DIR) / "data" / "logs" / "spruce-gran1";
-}
-
-#define SKIP_WITHOUT_GRAN()                            \
-  if (!fs::exists(granFolder() / "Gran_1_knots.json")) \
-  GTEST_SKIP() << "the spruce log is not available: " << granFolder() << " (shared/data is absent)"
-
 const LogModel& gran() {
-  static const LogModel log = loadLog(granFolder());
-  return log;
+  return *kerf::testing::granLog();
 }
 
 void expectSameImage(const Image& a, const Image& b, const std::string& what) {
@@ -134,23 +126,13 @@ TEST(BoardRender, ResolutionIsTheLongerSide) {
 namespace {
 
 using kerf::testing::checkGolden;
+using kerf::testing::earlyDeadKnot;
 
 Image renderGran(const Board& board, int resolution, const KnotSettings& settings = {}) {
   const KnotField field(gran(), settings);
   BoardRenderOptions options;
   options.resolution = resolution;
   return renderBoardFace(field, gran().colorMap, board, options);
-}
-
-// The knot that dies nearest the pith among those that do die well inside the log.
-int earlyDeadKnot(const LogModel& log) {
-  int best = -1;
-  for (int k = 0; k < static_cast<int>(log.knots.size()); ++k) {
-    const Knot& knot = log.knots[k];
-    if (knot.deathDistance < 30.0f || knot.heights[0] < 300.0f || knot.heights[0] > 3700.0f) continue;
-    if (best < 0 || knot.deathDistance < log.knots[best].deathDistance) best = k;
-  }
-  return best;
 }
 
 }  // namespace

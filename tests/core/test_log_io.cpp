@@ -3,6 +3,7 @@
 // messages for bad input.
 #include <gtest/gtest.h>
 
+#include "spruce_log.hpp"
 #include "test_files.hpp"
 
 #include <cmath>
@@ -21,13 +22,7 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-fs::path granFolder() {
-  return fs::path(KERF_SHARED_DIR) / "data" / "logs" / "spruce-gran1";
-}
-
-#define SKIP_WITHOUT_GRAN()                            \
-  if (!fs::exists(granFolder() / "Gran_1_knots.json")) \
-  GTEST_SKIP() << "the spruce log is not available: " << granFolder() << " (shared/data is absent)"
+using kerf::testing::granFolder;
 
 fs::path scratch(const std::string& name) {
   return kerf::testing::scratchFolder("log-io", name);

@@ -1,9 +1,6 @@
 // CPU/GPU parity: the GLSL wood model (shaders/wood_model.glsl) and core's model must give the same
 // picture. Renders faces and a slanted cut both ways, offscreen, and compares them.
 #include <QGuiApplication>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QtTest>
 #include <memory>
 
@@ -11,6 +8,7 @@
 
 #include "demo/demo_block.hpp"
 #include "gl/gpu_image_renderer.hpp"
+#include "gl_renderer_fixture.hpp"
 #include "render/renderers.hpp"
 
 using namespace kerf;
@@ -26,34 +24,16 @@ constexpr double kMaxShareOver = 0.005;
 
 }  // namespace
 
-class GpuParityTest : public QObject {
+class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageRenderer> {
   Q_OBJECT
 
  private slots:
   void initTestCase() {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    context_ = std::make_unique<QOpenGLContext>();
-    context_->setFormat(format);
-    QVERIFY2(context_->create(), "no OpenGL 3.3 core context (run under xvfb-run with Mesa)");
-    surface_ = std::make_unique<QOffscreenSurface>();
-    surface_->setFormat(context_->format());
-    surface_->create();
-    QVERIFY(context_->makeCurrent(surface_.get()));
-    qInfo() << "OpenGL renderer:"
-            << reinterpret_cast<const char*>(context_->functions()->glGetString(GL_RENDERER));
-    try {
-      renderer_ = std::make_unique<GpuImageRenderer>();
-    } catch (const std::exception& e) {
-      QFAIL(e.what());
-    }
+    const std::string error = startRenderer();
+    QVERIFY2(error.empty(), error.c_str());
   }
 
-  void cleanupTestCase() {
-    renderer_.reset();
-    context_->doneCurrent();
-  }
+  void cleanupTestCase() { stopRenderer(); }
 
   void demoFaces() {
     const WoodModel model(demoProject());
@@ -118,10 +98,6 @@ class GpuParityTest : public QObject {
     QVERIFY2(d.meanAbs < kMaxMeanAbs, qPrintable(name + " mean difference too large"));
     QVERIFY2(d.shareOverTolerance < kMaxShareOver, qPrintable(name + " too many differing pixels"));
   }
-
-  std::unique_ptr<QOpenGLContext> context_;
-  std::unique_ptr<QOffscreenSurface> surface_;
-  std::unique_ptr<GpuImageRenderer> renderer_;
 };
 
 QTEST_MAIN(GpuParityTest)

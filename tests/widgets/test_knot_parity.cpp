@@ -2,19 +2,19 @@
 // against core's renderBoardFace, on the three golden boards of tests/core/test_knot_render.cpp (boards
 // cut from the CT-measured spruce log), on a random log with a rotated board, and without culling.
 #include <QGuiApplication>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 
+#include "../core/spruce_log.hpp"
 #include "gl/gpu_board_renderer.hpp"
+#include "gl_renderer_fixture.hpp"
 #include "io/log_data_import.hpp"
 
 using namespace kerf;
+using kerf::testing::earlyDeadKnot;
 namespace fs = std::filesystem;
 
 namespace {
@@ -28,21 +28,6 @@ constexpr double kMaxMeanAbs = 5e-5;
 constexpr float kPixelTolerance = 0.01f;
 constexpr double kMaxShareOver = 5e-4;
 
-fs::path granFolder() {
-  return fs::path(KERF_SHARED_DIR) / "data" / "logs" / "spruce-gran1";
-}
-
-// The knot that dies nearest the pith among those that die well inside the log (as test_knot_render.cpp).
-int earlyDeadKnot(const LogModel& log) {
-  int best = -1;
-  for (int k = 0; k < static_cast<int>(log.knots.size()); ++k) {
-    const Knot& knot = log.knots[k];
-    if (knot.deathDistance < 30.0f || knot.heights[0] < 300.0f || knot.heights[0] > 3700.0f) continue;
-    if (best < 0 || knot.deathDistance < log.knots[best].deathDistance) best = k;
-  }
-  return best;
-}
-
 double maxAbsDifference(const Image& a, const Image& b) {
   double m = 0;
   for (std::size_t i = 0; i < a.pixels.size(); ++i)
@@ -52,34 +37,16 @@ double maxAbsDifference(const Image& a, const Image& b) {
 
 }  // namespace
 
-class KnotParityTest : public QObject {
+class KnotParityTest : public QObject, kerf::testing::GlRendererFixture<GpuBoardRenderer> {
   Q_OBJECT
 
  private slots:
   void initTestCase() {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    context_ = std::make_unique<QOpenGLContext>();
-    context_->setFormat(format);
-    QVERIFY2(context_->create(), "no OpenGL 3.3 core context (run under xvfb-run with Mesa)");
-    surface_ = std::make_unique<QOffscreenSurface>();
-    surface_->setFormat(context_->format());
-    surface_->create();
-    QVERIFY(context_->makeCurrent(surface_.get()));
-    qInfo() << "OpenGL renderer:"
-            << reinterpret_cast<const char*>(context_->functions()->glGetString(GL_RENDERER));
-    try {
-      renderer_ = std::make_unique<GpuBoardRenderer>();
-    } catch (const std::exception& e) {
-      QFAIL(e.what());
-    }
+    const std::string error = startRenderer();
+    QVERIFY2(error.empty(), error.c_str());
   }
 
-  void cleanupTestCase() {
-    renderer_.reset();
-    context_->doneCurrent();
-  }
+  void cleanupTestCase() { stopRenderer(); }
 
   void flatSawnBoardThroughKnots() {
     if (!gran()) QSKIP("the spruce log (shared/data) is absent");
@@ -140,13 +107,7 @@ class KnotParityTest : public QObject {
   }
 
  private:
-  static const LogModel* gran() {
-    static const std::optional<LogModel> log = []() -> std::optional<LogModel> {
-      if (!fs::exists(granFolder() / "Gran_1_knots.json")) return std::nullopt;
-      return loadLog(granFolder());
-    }();
-    return log ? &*log : nullptr;
-  }
+  static const LogModel* gran() { return kerf::testing::granLog(); }
 
   BoardRenderStats compareBoard(const LogModel& log, const WoodColorMap& colors, const Board& board,
                                 int resolution, const QString& name, const KnotSettings& settings = {},
@@ -182,10 +143,6 @@ class KnotParityTest : public QObject {
     }();
     return cpuStats;
   }
-
-  std::unique_ptr<QOpenGLContext> context_;
-  std::unique_ptr<QOffscreenSurface> surface_;
-  std::unique_ptr<GpuBoardRenderer> renderer_;
 };
 
 QTEST_MAIN(KnotParityTest)

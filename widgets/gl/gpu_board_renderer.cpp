@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/gl_helpers.hpp"
 #include "gl/wood_program.hpp"
 #include "params/parameter_schema.hpp"
 #include "util/error.hpp"
@@ -18,13 +19,6 @@
 
 namespace kerf {
 namespace {
-
-QVector3D toQt(glm::vec3 v) {
-  return {v.x, v.y, v.z};
-}
-QOpenGLExtraFunctions* gl() {
-  return QOpenGLContext::currentContext()->extraFunctions();
-}
 
 constexpr int kRowLength = 4096;       // long 1D lists are wrapped into rows of this many texels
 constexpr int kNoiseKnotsPerRow = 32;  // as in shaders/knots.glsl
@@ -44,7 +38,7 @@ enum Texture {
 // A 2D texture read with texelFetch only: nearest, no mipmaps (so that it is complete).
 void upload(unsigned texture, int unit, GLint internalFormat, int width, int height, GLenum format,
             GLenum type, const void* data) {
-  QOpenGLExtraFunctions* f = gl();
+  QOpenGLExtraFunctions* f = currentGl();
   GLint maxSize = 0;
   f->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   if (width > maxSize || height > maxSize) {
@@ -80,57 +74,30 @@ GpuBoardRenderer::GpuBoardRenderer() : program_(std::make_unique<QOpenGLShaderPr
       !program_->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) || !program_->link()) {
     throw std::runtime_error("knot shader failed to build: " + program_->log().toStdString());
   }
-  gl()->glGenVertexArrays(1, &vertexArray_);
-  gl()->glGenTextures(kTextureCount, textures_);
+  currentGl()->glGenVertexArrays(1, &vertexArray_);
+  currentGl()->glGenTextures(kTextureCount, textures_);
 }
 
 GpuBoardRenderer::~GpuBoardRenderer() {
   if (QOpenGLContext::currentContext()) {
-    gl()->glDeleteTextures(kTextureCount, textures_);
-    gl()->glDeleteVertexArrays(1, &vertexArray_);
+    currentGl()->glDeleteTextures(kTextureCount, textures_);
+    currentGl()->glDeleteVertexArrays(1, &vertexArray_);
   }
 }
 
 Image GpuBoardRenderer::render(const KnotField& field, const WoodColorMap& colors, const Board& board,
                                const BoardRenderOptions& options, BoardRenderStats* stats,
                                GpuBoardTimings* timings) {
-  if (options.resolution < 1) throw InputError("the resolution must be at least 1 pixel");
   GpuBoardTimings time;
   Stopwatch watch;
-  // The pixel -> log mapping and the culling boxes exactly as core's renderBoardFace.
-  const Block block = board.block();
-  const FaceFrame frame = block.face(options.face);
-  const float pxPerMm = static_cast<float>(options.resolution) / std::max(frame.widthMm, frame.heightMm);
-  const glm::ivec2 size = block.faceImageSize(options.face, pxPerMm);
-  const glm::mat3 axes = board.axes();
-  const glm::vec3 origin = board.center + axes * block.imageToBlock(options.face, glm::vec2(0.0f), size);
-  const glm::vec3 stepX =
-      board.center + axes * block.imageToBlock(options.face, glm::vec2(1.0f, 0.0f), size) - origin;
-  const glm::vec3 stepY =
-      board.center + axes * block.imageToBlock(options.face, glm::vec2(0.0f, 1.0f), size) - origin;
-  auto toLog = [&](glm::vec2 imagePos) { return origin + imagePos.x * stepX + imagePos.y * stepY; };
-
-  std::vector<int> boardKnots;
-  {
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    const glm::vec3 h = block.halfSize();
-    for (int c = 0; c < 8; ++c) {
-      const glm::vec3 p =
-          board.toLog(glm::vec3((c & 1) ? h.x : -h.x, (c & 2) ? h.y : -h.y, (c & 4) ? h.z : -h.z));
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    if (options.cull) {
-      field.cull(lo, hi, field.allKnots(), boardKnots);
-    } else {
-      boardKnots.assign(field.allKnots().begin(), field.allKnots().end());
-    }
-  }
+  // The pixel -> log mapping and the culling exactly as core's renderBoardFace.
+  const BoardFaceLayout layout = layoutBoardFace(field, board, options);
+  const glm::ivec2 size = layout.size;
+  const std::vector<int>& boardKnots = layout.boardKnots;
   const int boardCount = static_cast<int>(boardKnots.size());
 
   // Per tile: (first, count) into one list of board-knot indices (0..boardCount-1, ascending).
-  const int tile = std::max(options.tileSize, 1);
-  const int tilesX = (size.x + tile - 1) / tile, tilesY = (size.y + tile - 1) / tile;
+  const int tilesX = layout.tilesX, tilesY = layout.tilesY;
   std::vector<std::vector<int>> rowLists(tilesY);
   std::vector<GLint> tileRanges(static_cast<std::size_t>(tilesX) * tilesY * 2);
   std::vector<int> boardIndex(field.log().knots.size(), -1);
@@ -139,25 +106,11 @@ Image GpuBoardRenderer::render(const KnotField& field, const WoodColorMap& color
     std::vector<int> tileKnots;
     std::vector<int>& list = rowLists[ty];
     for (int tx = 0; tx < tilesX; ++tx) {
-      const int x0 = tx * tile, y0 = ty * tile;
-      const int x1 = std::min(x0 + tile, size.x), y1 = std::min(y0 + tile, size.y);
       GLint* range = &tileRanges[(static_cast<std::size_t>(ty) * tilesX + tx) * 2];
       range[0] = static_cast<GLint>(list.size());  // made global below
-      if (options.cull) {
-        glm::vec3 lo(1e30f), hi(-1e30f);
-        for (int c = 0; c < 4; ++c) {
-          const glm::vec3 p = toLog(glm::vec2((c & 1) ? x1 : x0, (c & 2) ? y1 : y0));
-          lo = glm::min(lo, p);
-          hi = glm::max(hi, p);
-        }
-        tileKnots.clear();
-        field.cull(lo - glm::vec3(1e-3f), hi + glm::vec3(1e-3f), boardKnots, tileKnots);
-        for (const int k : tileKnots) list.push_back(boardIndex[k]);
-        range[1] = static_cast<GLint>(tileKnots.size());
-      } else {
-        for (int i = 0; i < boardCount; ++i) list.push_back(i);
-        range[1] = boardCount;
-      }
+      layout.tileKnots(field, tx, ty, tileKnots);
+      for (const int k : tileKnots) list.push_back(boardIndex[k]);
+      range[1] = static_cast<GLint>(tileKnots.size());
     }
   });
   std::vector<GLint> tileList;
@@ -225,7 +178,7 @@ Image GpuBoardRenderer::render(const KnotField& field, const WoodColorMap& color
   format.setInternalTextureFormat(0x8814);  // GL_RGBA32F: no 8-bit rounding before the comparison
   QOpenGLFramebufferObject fbo(size.x, size.y, format);
   if (!fbo.isValid() || !fbo.bind()) throw std::runtime_error("cannot create a float framebuffer");
-  QOpenGLExtraFunctions* f = gl();
+  QOpenGLExtraFunctions* f = currentGl();
   upload(textures_[kPith], kPith, GL_RG32F, stem.slices(), 1, GL_RG, GL_FLOAT, pith.data());
   upload(textures_[kRadii], kRadii, GL_R32F, stem.azimuths, stem.slices(), GL_RED, GL_FLOAT,
          stem.radii.data());
@@ -270,11 +223,11 @@ Image GpuBoardRenderer::render(const KnotField& field, const WoodColorMap& color
   p.setUniformValue("u_knotOutlineWidth", s.outlineWidth);
   p.setUniformValue("u_knotOutlineShade", s.outlineShade);
   p.setUniformValue("u_knotOutlineNoise", s.outlineNoise);
-  p.setUniformValue("u_origin", toQt(origin));
-  p.setUniformValue("u_stepX", toQt(stepX));
-  p.setUniformValue("u_stepY", toQt(stepY));
+  p.setUniformValue("u_origin", toQt(layout.origin));
+  p.setUniformValue("u_stepX", toQt(layout.stepX));
+  p.setUniformValue("u_stepY", toQt(layout.stepY));
   p.setUniformValue("u_imageHeight", static_cast<float>(size.y));
-  p.setUniformValue("u_tileSize", tile);
+  p.setUniformValue("u_tileSize", layout.tile);
   p.setUniformValue("u_tileListRow", kRowLength);
   time.upload = watch.seconds();
   watch = Stopwatch();

@@ -6,28 +6,19 @@
 #include <QVector3D>
 #include <cmath>
 
+#include "gl/gl_helpers.hpp"
 #include "gl/wood_program.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
-namespace {
-
-QVector3D toQt(glm::vec3 v) {
-  return {v.x, v.y, v.z};
-}
-QOpenGLExtraFunctions* gl() {
-  return QOpenGLContext::currentContext()->extraFunctions();
-}
-
-}  // namespace
 
 GpuImageRenderer::GpuImageRenderer()
     : program_(std::make_unique<WoodProgram>("image_plane.vert", "image_plane.frag")) {
-  gl()->glGenVertexArrays(1, &vertexArray_);  // core profile: drawing needs a bound VAO
+  currentGl()->glGenVertexArrays(1, &vertexArray_);  // core profile: drawing needs a bound VAO
 }
 
 GpuImageRenderer::~GpuImageRenderer() {
-  if (QOpenGLContext::currentContext()) gl()->glDeleteVertexArrays(1, &vertexArray_);
+  if (QOpenGLContext::currentContext()) currentGl()->glDeleteVertexArrays(1, &vertexArray_);
 }
 
 Image GpuImageRenderer::draw(const WoodModel& model, glm::vec3 origin, glm::vec3 pixelRight,
@@ -36,7 +27,7 @@ Image GpuImageRenderer::draw(const WoodModel& model, glm::vec3 origin, glm::vec3
   format.setInternalTextureFormat(0x8814);  // GL_RGBA32F: no 8-bit rounding before the comparison
   QOpenGLFramebufferObject fbo(size.x, size.y, format);
   if (!fbo.isValid() || !fbo.bind()) throw std::runtime_error("cannot create a float framebuffer");
-  QOpenGLExtraFunctions* f = gl();
+  QOpenGLExtraFunctions* f = currentGl();
   f->glViewport(0, 0, size.x, size.y);
   f->glDisable(GL_BLEND);
   f->glDisable(GL_DEPTH_TEST);
