@@ -504,6 +504,8 @@ int main(int argc, char** argv) {
   kerf::useKerfSurfaceFormat();  // as the editor does
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("KerfTests"));
+  // The default window layout, whatever an earlier run saved: pixel positions in the tests depend on it.
+  qputenv("KERF_DEFAULT_LAYOUT", "1");
   TestMainWindow test;
   return QTest::qExec(&test, argc, argv);
 }
