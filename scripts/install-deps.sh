@@ -9,6 +9,8 @@ packages=(
   # core libraries
   libglm-dev libeigen3-dev libceres-dev libopencv-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev
+  # OpenVDB volume export; Debian's find module also needs Boost.Iostreams, which the package does not pull in
+  libopenvdb-dev libboost-iostreams-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # Qt 6 (Widgets, OpenGL, OpenGLWidgets, Concurrent, Test) and its X11 platform plugin

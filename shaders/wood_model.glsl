@@ -232,6 +232,55 @@ float rayWeight(Cylindrical c) {
   return wyvill(dt * dt + dh * dh) * taper;
 }
 
+// --- Knots in the block (core/field/block_knots.*: Mokume Sec. 5.2.4 Eq. 7, Larsson et al. 2022) ----
+const int kMaxBlockKnots = 8;  // WoodProgram uploads at most this many
+uniform int u_blockKnotCount;
+uniform vec3 u_blockKnotOrigin[kMaxBlockKnots];
+uniform vec3 u_blockKnotDirection[kMaxBlockKnots];  // unit
+uniform float u_blockKnotSpeed[kMaxBlockKnots];
+
+// Eq. 2 (powerSmoothMinOf).
+float blockKnotSmoothMin(float a, float b, float k) {
+  float m = b < a ? b : a, M = a < b ? b : a;
+  if (!(m > 0.0)) return max(m, 0.0);
+  return m * pow(1.0 + pow(m / M, k), -1.0 / k);
+}
+
+// Distance to the knot's half-line (knotAxisDistance).
+float blockKnotDistance(int i, vec3 p) {
+  vec3 rel = p - u_blockKnotOrigin[i];
+  float along = max(dot(rel, u_blockKnotDirection[i]), 0.0);
+  vec3 d = rel - along * u_blockKnotDirection[i];
+  return sqrt(dot(d, d));
+}
+
+// BlockKnots::merge: G_k from the stem time; darkness for Sec. 4.3.
+float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkness) {
+  darkness = 0.0;
+  if (u_blockKnotCount == 0 || !(stemRadius > 1e-3)) return stemTime;
+  float knotMin = stemTime, sumSmoothing = 0.0;
+  int inReach = 0;
+  for (int i = 0; i < u_blockKnotCount; ++i) {
+    float distance = blockKnotDistance(i, p);
+    float ratio = distance / stemRadius;
+    if (ratio >= u_knotReachEnd) continue;  // out of reach: G unchanged
+    float window = 1.0;
+    if (!(ratio <= u_knotReachStart)) {
+      float x = clamp((ratio - u_knotReachStart) / (u_knotReachEnd - u_knotReachStart), 0.0, 1.0);
+      window = 1.0 - x * x * (3.0 - 2.0 * x);
+    }
+    float time = distance / (u_blockKnotSpeed[i] * u_ringWidth);
+    knotMin = min(knotMin, time);
+    sumSmoothing += window * (blockKnotSmoothMin(stemTime, time, u_knotSmoothStem) - min(time, stemTime));
+    if (stemTime > 0.0) {
+      float e = clamp((time / stemTime - (1.0 - u_knotEdgeSoftness)) / max(u_knotEdgeSoftness, 1e-4), 0.0, 1.0);
+      darkness = max(darkness, window * (1.0 - e * e * (3.0 - 2.0 * e)));
+    }
+    ++inReach;
+  }
+  return inReach > 0 ? max(knotMin + sumSmoothing, 0.0) : stemTime;
+}
+
 struct WoodSample {
   float year, latewood, pore, ray;
   vec3 color, fiberDirection;
@@ -244,6 +293,8 @@ WoodSample evaluateWood(vec3 p, int faceIndex) {
   vec3 u = undistort(p, distorted, s.fiberDirection);
   Cylindrical c = toCylindrical(u);
   s.year = growthField(c);
+  float knotDarkness;
+  s.year = mergeBlockKnots(u, s.year, c.radius, knotDarkness);  // Mokume Sec. 5.2.4 Eq. 7
   s.latewood = seasonOf(s.year);
   s.pore = poreWeight(c, s.latewood);
   s.ray = rayWeight(c);
@@ -265,6 +316,7 @@ WoodSample evaluateWood(vec3 p, int faceIndex) {
   vec3 late = max(mix(u_latewoodColor, u_sapwoodLatewoodColor, sap), vec3(1e-3));
   vec3 color = early * pow(late / early, vec3(t));
   color = mix(color, u_rayColor, u_rayOpacity * s.ray);
+  color -= knotDarkness * u_knotDarkening;  // Larsson et al. 2022 Sec. 4.3
   if (faceIndex == 0) color *= u_faceTintA;
   else if (faceIndex == 1) color *= u_faceTintB;
   else if (faceIndex == 2) color *= u_faceTintC;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/cut_plane.hpp"
 #include "util/progress.hpp"
 #include "util/resource_usage.hpp"
 
@@ -35,6 +36,12 @@ Command addDetectCommand(CLI::App& app);
 Command addFitCommand(CLI::App& app);
 Command addAnnotationsCommand(CLI::App& app);
 Command addRenderBoardCommand(CLI::App& app);
+Command addRenderPanelCommand(CLI::App& app);  // render_panel_command.cpp
 Command addRectifyCommand(CLI::App& app);
+Command addTextureCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);  // export_command.cpp
+
+// --plane px,py,pz,nx,ny,nz (render-cut, export). Throws InputError.
+CutPlane parsePlane(const std::string& text);
 
 }  // namespace kerf::cli

@@ -24,6 +24,9 @@ Command addDemoCommand(CLI::App& app) {
   demo->add_flag("--no-photo-look", o->plain, "Write the plain rendering, without lighting and noise");
   demo->add_flag("--numbered-traces", o->demo.numberedTraces,
                  "Also write the true rings as numbered ring traces (A_ann.png .. F_ann.png, Mokume format)");
+  demo->add_flag(
+      "--knot", o->demo.knot,
+      "Grow a knot through the block and mark its centres (X_knot.png, Mokume format; docs/fitting.md)");
   return {demo, [o](Context& context) {
             o->demo.photoLook = !o->plain;
             const DemoFiles files = writeDemo(o->out, o->demo, context.progress());

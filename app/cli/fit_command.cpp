@@ -66,6 +66,7 @@ Command addFitCommand(CLI::App& app) {
 
             GrowthFieldFitInput input;
             if (!o->ignoreTraces) input.traces = project.annotations.traces;
+            input.knotMarks = project.annotations.knots;  // knots of the field (Mokume Sec. 5.2.4)
             std::array<std::string, 6> files;
             for (FaceId face : kAllFaces) {
               const fs::path file = findRingLocalizationImage(folder, face);
@@ -107,6 +108,7 @@ Command addFitCommand(CLI::App& app) {
                 std::printf("%s\n", line.c_str());
             }
             project.params = fit.params;
+            project.knots = fit.knots;
             project.rates =
                 fit.rates ? *fit.rates
                           : GrowthRates::uniform(project.block, PithAxis::fromAngles(fit.params.pithOrigin,

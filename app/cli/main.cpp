@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
       cli::addDemoCommand(app),         cli::addRenderFacesCommand(app), cli::addRenderCutCommand(app),
       cli::addExportVolumeCommand(app), cli::addParamsCommand(app),      cli::addDetectCommand(app),
       cli::addFitCommand(app),          cli::addAnnotationsCommand(app), cli::addRectifyCommand(app),
-      cli::addRenderBoardCommand(app),
+      cli::addRenderBoardCommand(app),  cli::addRenderPanelCommand(app), cli::addTextureCommand(app),
+      cli::addExportCommand(app),
   };
 
   try {

@@ -15,7 +15,6 @@
 namespace fs = std::filesystem;
 
 namespace kerf::cli {
-namespace {
 
 CutPlane parsePlane(const std::string& text) {
   const std::vector<float> v = parseNumberList(text, "--plane");
@@ -23,8 +22,6 @@ CutPlane parsePlane(const std::string& text) {
     throw InputError("--plane takes 6 numbers: px,py,pz,nx,ny,nz (a point and a normal, block mm)");
   return CutPlane({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
 }
-
-}  // namespace
 
 Command addRenderFacesCommand(CLI::App& app) {
   auto* faces = app.add_subcommand("render-faces", "Render the model's six faces A.png..F.png");

@@ -1,4 +1,4 @@
-// export-volume: the growth field or the colour as a NRRD volume.
+// export-volume: the growth field or the colour as a NRRD or OpenVDB volume (also `export` with .nrrd/.vdb).
 #include <cstdio>
 
 #include "command.hpp"
@@ -8,7 +8,8 @@
 namespace kerf::cli {
 
 Command addExportVolumeCommand(CLI::App& app) {
-  auto* volume = app.add_subcommand("export-volume", "Write the growth field or the colour as a NRRD volume");
+  auto* volume = app.add_subcommand(
+      "export-volume", "Write the growth field or the colour as a NRRD or OpenVDB volume (by extension)");
   struct Options {
     std::string document, quantity = "growth", out;
     int resolution = 128;
@@ -19,7 +20,7 @@ Command addExportVolumeCommand(CLI::App& app) {
       ->check(CLI::IsMember({"growth", "color"}));
   volume->add_option("--res", o->resolution, "Samples along the block's longest side")
       ->check(CLI::Range(1, 4096));
-  volume->add_option("--out", o->out, "Output .nrrd file")->required();
+  volume->add_option("--out", o->out, "Output .nrrd or .vdb file")->required();
   return {volume, [o](Context& context) {
             const Project project = loadDocument(o->document);
             const WoodModel model(project);

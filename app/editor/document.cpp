@@ -29,6 +29,7 @@ void Document::reset(const Project& project, const QString& path, const QString&
   emit cutPlaneChanged();
   emit photosChanged();
   emit annotationsChanged();
+  emit logChanged();
   emit modifiedChanged(false);
 }
 
@@ -59,11 +60,14 @@ void Document::applyParameters(const WoodParameters& params, const QString& undo
 }
 
 void Document::applyGrowthField(const WoodParameters& params, std::optional<GrowthRates> rates,
-                                const QString& undoText) {
+                                const QString& undoText, std::optional<std::vector<BlockKnot>> knots) {
   validate(params);
   if (rates) rates->validate();
-  undo_.push(
-      new SetGrowthFieldCommand(this, project_.params, project_.rates, params, std::move(rates), undoText));
+  std::vector<BlockKnot> afterKnots = knots ? std::move(*knots) : project_.knots;
+  for (std::size_t i = 0; i < afterKnots.size(); ++i)
+    validate(afterKnots[i], "knots[" + std::to_string(i) + "]");
+  undo_.push(new SetGrowthFieldCommand(this, {project_.params, project_.rates, project_.knots},
+                                       {params, std::move(rates), std::move(afterKnots)}, undoText));
 }
 
 void Document::editCutPlane(const CutPlaneSetting& setting, bool finished) {
@@ -117,9 +121,11 @@ void Document::applyAllParameters(const WoodParameters& params) {
   emit modelChanged();
 }
 
-void Document::applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates) {
+void Document::applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates,
+                                     const std::vector<BlockKnot>& knots) {
   project_.params = params;
   project_.rates = rates;
+  project_.knots = knots;
   rebuildModel();
   emit modelChanged();
 }

@@ -49,8 +49,9 @@ class Document : public QObject {
   // Replaces the growth field as one undo step: the parameters (growth.*, and any others that differ)
   // together with the explicit growth rates (std::nullopt: rates synthesised from the parameters).
   // Validates both first (InputError; nothing is pushed then).
+  // knots: the field's knots (Project::knots); std::nullopt keeps the current ones.
   void applyGrowthField(const WoodParameters& params, std::optional<GrowthRates> rates,
-                        const QString& undoText);
+                        const QString& undoText, std::optional<std::vector<BlockKnot>> knots = std::nullopt);
   void editCutPlane(const CutPlaneSetting& setting, bool finished);
   void replacePhoto(FaceId face, const QString& path, const QImage& image);
   // The block's size and all six face photos together, as one undo step (File > Import Photos): a null
@@ -59,6 +60,12 @@ class Document : public QObject {
                              const std::array<QImage, 6>& images, const QString& undoText);
   // Replaces the annotations as one undo step (nothing is pushed when they are unchanged).
   void editAnnotations(const Annotations& after, const QString& undoText);
+  // The log and its board (document_log.cpp); each edit is one undo step, a board drag merges until
+  // finished. The block follows the board's size. Throw InputError for a bad log, board or knot.
+  const std::optional<ProjectLog>& log() const { return project_.log; }
+  void setLog(std::optional<ProjectLog> log, const QString& undoText);
+  void editBoard(const Board& board, bool finished);
+  void editKnots(std::vector<Knot> knots, const QString& undoText);
   // The cut's visibility is a view setting: saved with the project, but not an undo step.
   void setCutEnabled(bool enabled);
   // Marks the document as holding unsaved work (recovered from an autosave).
@@ -73,10 +80,14 @@ class Document : public QObject {
   // Used by the undo commands only: set a value without pushing a command.
   void applyParameterValue(std::size_t index, std::array<float, 3> value);
   void applyAllParameters(const WoodParameters& params);
-  void applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates);
+  void applyGrowthFieldValue(const WoodParameters& params, const std::optional<GrowthRates>& rates,
+                             const std::vector<BlockKnot>& knots);
   void applyCutPlane(const CutPlaneSetting& setting);
   void applyPhoto(FaceId face, const QString& path, const QImage& image);
   void applyAnnotations(const Annotations& annotations);
+  void applyLog(const std::optional<ProjectLog>& log, const Block& block);
+  void applyBoard(const Board& board);
+  void applyKnots(const std::vector<Knot>& knots);
   void applyBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
                            const std::array<QImage, 6>& images);
 
@@ -88,6 +99,8 @@ class Document : public QObject {
   void blockChanged();   // the block's size (the model changes with it: modelChanged follows)
   void documentReset();  // a different document (or file) is now open
   void modifiedChanged(bool modified);
+  void logChanged();    // a log attached, removed or its knots edited (modelChanged may follow)
+  void boardChanged();  // the board moved or resized
 
  private:
   void rebuildModel();

@@ -44,23 +44,17 @@ void SetAllParametersCommand::redo() {
   document_->applyAllParameters(after_);
 }
 
-SetGrowthFieldCommand::SetGrowthFieldCommand(Document* document, WoodParameters beforeParams,
-                                             std::optional<GrowthRates> beforeRates,
-                                             WoodParameters afterParams,
-                                             std::optional<GrowthRates> afterRates, const QString& text)
-    : document_(document),
-      beforeParams_(std::move(beforeParams)),
-      afterParams_(std::move(afterParams)),
-      beforeRates_(std::move(beforeRates)),
-      afterRates_(std::move(afterRates)) {
+SetGrowthFieldCommand::SetGrowthFieldCommand(Document* document, Field before, Field after,
+                                             const QString& text)
+    : document_(document), before_(std::move(before)), after_(std::move(after)) {
   setText(text);
 }
 
 void SetGrowthFieldCommand::undo() {
-  document_->applyGrowthFieldValue(beforeParams_, beforeRates_);
+  document_->applyGrowthFieldValue(before_.params, before_.rates, before_.knots);
 }
 void SetGrowthFieldCommand::redo() {
-  document_->applyGrowthFieldValue(afterParams_, afterRates_);
+  document_->applyGrowthFieldValue(after_.params, after_.rates, after_.knots);
 }
 
 SetCutPlaneCommand::SetCutPlaneCommand(Document* document, const CutPlaneSetting& before,

@@ -8,6 +8,7 @@
 #include <array>
 #include <optional>
 
+#include "field/block_knots.hpp"
 #include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
@@ -51,16 +52,19 @@ class SetAllParametersCommand : public QUndoCommand {
 // The growth field as a whole (a fit's result): parameters and explicit rates, before and after.
 class SetGrowthFieldCommand : public QUndoCommand {
  public:
-  SetGrowthFieldCommand(Document* document, WoodParameters beforeParams,
-                        std::optional<GrowthRates> beforeRates, WoodParameters afterParams,
-                        std::optional<GrowthRates> afterRates, const QString& text);
+  // A whole growth field: parameters, explicit rates (or none) and the knots in it.
+  struct Field {
+    WoodParameters params;
+    std::optional<GrowthRates> rates;
+    std::vector<BlockKnot> knots;
+  };
+  SetGrowthFieldCommand(Document* document, Field before, Field after, const QString& text);
   void undo() override;
   void redo() override;
 
  private:
   Document* document_;
-  WoodParameters beforeParams_, afterParams_;
-  std::optional<GrowthRates> beforeRates_, afterRates_;
+  Field before_, after_;
 };
 
 class SetCutPlaneCommand : public QUndoCommand {

@@ -94,8 +94,11 @@ std::array<GrayImage8, 6> readFolderRingImages(const fs::path& folder) {
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos,
                                const Progress& progress, const std::vector<RingTrace>& traces,
-                               const GrowthFitPreview& preview) {
-  GrowthFieldFitInput input{images, {}, traces};
+                               const GrowthFitPreview& preview, const std::vector<KnotMark>& knotMarks) {
+  GrowthFieldFitInput input;
+  input.rings = images;
+  input.traces = traces;
+  input.knotMarks = knotMarks;  // marks sharing an id: one knot of the field (Mokume Sec. 5.2.4)
   // Detected contours became the document's traces (corrected by the user): the images then only place
   // the rings and give the image term.
   input.contoursFromImages = traces.empty();
@@ -115,6 +118,7 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
   GrowthFitResult out;
   out.params = fit.params;
   out.rates = *fit.rates;
+  out.knots = fit.knots;
   for (const std::string& line : formatGrowthFieldFitReport(fit.report))
     out.report << QString::fromStdString(line);
   out.ambiguous = fit.report.pith.ambiguous;
@@ -126,7 +130,7 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
   }
   if (fit.alternative && fit.alternative->rates)
     out.alternative = GrowthFitResult::Alternative{fit.alternative->params, *fit.alternative->rates,
-                                                   fit.alternative->finalLossRings};
+                                                   fit.alternative->finalLossRings, fit.alternative->knots};
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "field/block_knots.hpp"
 #include "field/growth_rates.hpp"
 #include "fit/iso_contours.hpp"
 #include "geometry/block.hpp"
@@ -60,7 +61,8 @@ struct FittedContour {
 struct GrowthFitResult {
   WoodParameters params;  // the input parameters with growth.pith_*, ring_width, ring_offset replaced
   GrowthRates rates;
-  QStringList report;  // lines for the log: contours, loss, O, V, ambiguity, timings
+  std::vector<BlockKnot> knots;  // fitted from the knot marks (Mokume Sec. 5.2.4)
+  QStringList report;            // lines for the log: contours, loss, O, V, ambiguity, timings
   bool ambiguous = false;
   double lossRings = 0;  // final iso-contour loss of the saved field, in ring spacings
   std::vector<FittedContour> contours;
@@ -69,6 +71,7 @@ struct GrowthFitResult {
     WoodParameters params;
     GrowthRates rates;
     double lossRings = 0;
+    std::vector<BlockKnot> knots;
   };
   std::optional<Alternative> alternative;
 };
@@ -84,6 +87,7 @@ inline constexpr int kMinFitContours = 4;
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos = {},
                                const Progress& progress = {}, const std::vector<RingTrace>& traces = {},
-                               const GrowthFitPreview& preview = {});
+                               const GrowthFitPreview& preview = {},
+                               const std::vector<KnotMark>& knotMarks = {});
 
 }  // namespace kerf

@@ -199,6 +199,7 @@ void MainWindow::createDocks() {
   tabifyDockWidget(cut, logDock);
   tabifyDockWidget(logDock, historyDock);
   cut->raise();
+  createLogDocks();  // main_window_log.cpp
 }
 
 void MainWindow::restoreLayout() {
@@ -275,6 +276,10 @@ void MainWindow::modelChanged() {
 // A newer edit cancels the running render, so a slider drag keeps showing fresh previews.
 void MainWindow::renderFaces() {
   if (!hasDocument_) return;
+  if (document_->log()) {  // the board cut from the log (main_window_log.cpp)
+    renderBoardFaces();
+    return;
+  }
   renderFacesOf(document_->model());
 }
 
@@ -314,7 +319,7 @@ void MainWindow::renderFacesOf(std::shared_ptr<const WoodModel> model) {
 
 void MainWindow::updateFacesView() {
   facesView_->setRenderings(renderings_);
-  const bool photos = document_->hasPhotos();
+  const bool photos = document_->hasPhotos() && !document_->log();  // a log's board has no photos
   if (!displayChosenByUser_) displayMode_ = photos ? 0 : 1;
   if (!photos && displayMode_ != 1) displayMode_ = 1;  // nothing to show or blend but the model
   for (QAction* action : displayGroup_->actions()) {

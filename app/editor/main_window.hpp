@@ -5,13 +5,18 @@
 // cancel, never on the GUI thread).
 #include <QMainWindow>
 #include <array>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "document_jobs.hpp"
+#include "export_dialog.hpp"
 #include "fit_job.hpp"
+#include "texture/texture_inference.hpp"
 
 class QAction;
 class QActionGroup;
+class QMenu;
 class QLabel;
 class QSlider;
 class QToolBar;
@@ -21,6 +26,11 @@ namespace kerf {
 
 class AnnotationLayer;
 class Autosave;
+class BoardControls;
+class KnotTable;
+class LogView;
+struct KnotShape;
+struct LogModel;
 class CutPlaneControls;
 class CutView;
 class Document;
@@ -100,7 +110,37 @@ class MainWindow : public QMainWindow {
   bool exportAnnotations(QString folder = {});
   QAction* exportAnnotationsAction() const { return exportAnnotationsAction_; }
 
+  // Texture menu (main_window_texture.cpp): Infer Texture from Photos runs the texture inference of
+  // `kerf-cli texture` on the document's photos and fitted field (a job with live preview, cancellable) and
+  // applies the result as one undo step. The options are the core's defaults unless set (tests: smaller).
+  void inferTexture();
+  QAction* inferTextureAction() const { return inferTextureAction_; }
+  void setTextureOptions(const TextureInferenceOptions& options) { textureOptions_ = options; }
+
+  // Logs (main_window_log.cpp): a .kerflog file or Gran_1 folder (read in the background), or a random
+  // log; attached to the document as one undo step (a new document when none is open), with the default
+  // flat-sawn board. The faces then show the board. Save Log As writes the log alone (asks when empty).
+  void openLog(const QString& path);
+  void openRandomLog(std::uint32_t seed);
+  bool saveLogAs(QString path = {});
+  void closeLog();
+  LogView* logView() const { return logView_; }
+  BoardControls* boardControls() const { return boardControls_; }
+  KnotTable* knotTable() const { return knotTable_; }
+
+  // File > Export (main_window_export.cpp): Face Image, Cut Image (the document's cut plane), Volume and
+  // Depth Stack open an ExportDialog (returned, non-modal); its request runs as a background job
+  // (startExport, also for tests), ending in exportFinished or exportFailed (with a message box).
+  ExportDialog* showExportDialog(ExportDialog::Kind kind);
+  int startExport(const ExportRequest& request);
+  QAction* exportAction(ExportDialog::Kind kind) const { return exportActions_[static_cast<int>(kind)]; }
+
  signals:
+  // An export job wrote its file(s) (message: what was written), or failed / was cancelled.
+  void exportFinished(const QString& path, const QString& message);
+  void exportFailed(const QString& message);
+  // A log is attached (its faces follow with facesPreviewed / facesRendered).
+  void logOpened();
   // The document has loaded and its faces have rendered (at full resolution).
   void documentReady();
   // Loading failed; the message is also shown in a (non-blocking) message box and the log.
@@ -117,6 +157,11 @@ class MainWindow : public QMainWindow {
   // Either of them failed (the message is also in the log and a message box) or was cancelled.
   void ringJobFailed(const QString& message);
   void photosImported();
+  // Infer Texture finished and its result is applied / an improved texture is previewed on the faces /
+  // it failed or was cancelled (the message is also in the log and, for errors, a message box).
+  void textureInferred();
+  void texturePreviewed();
+  void textureJobFailed(const QString& message);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -126,7 +171,18 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createMenus();
   void createRingsMenu();
+  void createTextureMenu();  // main_window_texture.cpp
+  void showTexturePreview(const WoodParameters& params);
   QAction* createImportAction();  // main_window_import.cpp
+  void createLogDocks();          // main_window_log.cpp
+  void createLogActions(QMenu* file);
+  void chooseLog();
+  void attachLog(LogModel log);
+  void showLog();
+  void renderBoardFaces();
+  void addKnot();
+  void deleteKnot(int knot);
+  void editKnot(int knot, const KnotShape& shape);
   void clearRingDetection();
   QToolBar* createAnnotationBar(QWidget* parent);
   void applyDetectedTraces(const RingDetection& detection);
@@ -153,8 +209,7 @@ class MainWindow : public QMainWindow {
   void applyPreset(const QString& presetId);
 
   void exportFaces();
-  void exportCut();
-  void exportVolume();
+  void createExportActions(QMenu* exportMenu);  // main_window_export.cpp
 
   void showError(const QString& message);
   void logMessage(const QString& level, const QString& text);
@@ -175,6 +230,9 @@ class MainWindow : public QMainWindow {
   int renderJob_ = 0;
   int ringJob_ = 0, fitJob_ = 0;
   int importJob_ = 0;
+  int textureJob_ = 0;
+  QAction* inferTextureAction_ = nullptr;
+  TextureInferenceOptions textureOptions_;
   std::shared_ptr<const RingDetection> ringDetection_;
 
   FacesView* facesView_ = nullptr;
@@ -201,6 +259,14 @@ class MainWindow : public QMainWindow {
   AnnotationLayer* annotationLayer_ = nullptr;
   QAction* exportAnnotationsAction_ = nullptr;
   QAction* importPhotosAction_ = nullptr;
+  LogView* logView_ = nullptr;
+  BoardControls* boardControls_ = nullptr;
+  KnotTable* knotTable_ = nullptr;
+  std::array<QAction*, 4> exportActions_{};
+  std::vector<int> exportJobs_;
+  QAction* saveLogAction_ = nullptr;
+  QAction* closeLogAction_ = nullptr;
+  bool logShown_ = false;  // the views show a log (its board's faces)
 };
 
 }  // namespace kerf

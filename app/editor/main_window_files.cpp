@@ -6,7 +6,6 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStandardPaths>
@@ -21,7 +20,6 @@
 #include "qt_image.hpp"
 #include "recent_files.hpp"
 #include "render/renderers.hpp"
-#include "render/volume_export.hpp"
 #include "util/error.hpp"
 #include "viewport3d.hpp"
 
@@ -49,6 +47,7 @@ void MainWindow::createMenus() {
   open->setShortcut(QKeySequence::Open);
   recent_ = new RecentFiles(file->addMenu(tr("Open &Recent")), this);
   file->addAction(createImportAction());
+  createLogActions(file);  // main_window_log.cpp
   connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
     if (maybeSave()) openDocument(path);
   });
@@ -59,9 +58,7 @@ void MainWindow::createMenus() {
   saveAsAction->setShortcut(QKeySequence::SaveAs);
   file->addSeparator();
   QMenu* exportMenu = file->addMenu(tr("&Export"));
-  exportMenu->addAction(tr("Model &Faces as Images…"), this, &MainWindow::exportFaces);
-  exportMenu->addAction(tr("&Cut Surface as Image…"), this, &MainWindow::exportCut);
-  exportMenu->addAction(tr("&Volume (NRRD)…"), this, &MainWindow::exportVolume);
+  createExportActions(exportMenu);  // main_window_export.cpp
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
@@ -99,6 +96,7 @@ void MainWindow::createMenus() {
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
 
   createRingsMenu();
+  createTextureMenu();
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Kerf"), this, [this] {
@@ -244,47 +242,6 @@ void MainWindow::exportFaces() {
         return folder;
       },
       [this](const QVariant& done) { logMessage("info", tr("Faces written to %1").arg(done.toString())); },
-      {}, false);
-}
-
-void MainWindow::exportCut() {
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export cut surface"), documentsFolder() + "/cut.png", tr("Images (*.png *.tif *.jpg)"));
-  if (path.isEmpty()) return;
-  const auto model = document_->model();
-  const CutPlane plane = document_->cutPlane().plane();
-  jobs_->start(
-      tr("Exporting cut"),
-      [model, plane, path](const Progress& progress, const JobRunner::Preview&) -> QVariant {
-        writeImage(path.toStdString(), renderCut(*model, plane, 20.0f, 2, progress));
-        return path;
-      },
-      [this](const QVariant& done) {
-        logMessage("info", tr("Cut written to %1 (20 px/mm)").arg(done.toString()));
-      },
-      {}, false);
-}
-
-void MainWindow::exportVolume() {
-  bool ok = false;
-  const QString quantity = QInputDialog::getItem(this, tr("Export volume"), tr("Quantity:"),
-                                                 {tr("growth"), tr("color")}, 0, false, &ok);
-  if (!ok) return;
-  const int resolution = QInputDialog::getInt(this, tr("Export volume"),
-                                              tr("Samples along the longest side:"), 256, 8, 2048, 32, &ok);
-  if (!ok) return;
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export volume"), documentsFolder() + "/" + quantity + ".nrrd", tr("NRRD volumes (*.nrrd)"));
-  if (path.isEmpty()) return;
-  const auto model = document_->model();
-  jobs_->start(
-      tr("Exporting %1 volume").arg(quantity),
-      [model, quantity, resolution, path](const Progress& progress, const JobRunner::Preview&) -> QVariant {
-        kerf::exportVolume(*model, volumeQuantityFromName(quantity.toStdString()), resolution,
-                           path.toStdString(), progress);
-        return path;
-      },
-      [this](const QVariant& done) { logMessage("info", tr("Volume written to %1").arg(done.toString())); },
       {}, false);
 }
 

@@ -147,6 +147,7 @@ void MainWindow::fitGrowthField() {
   // document's ring traces (detected, corrected, drawn) are the contours when there are any.
   const std::shared_ptr<const RingDetection> detection = ringDetection_;
   const std::vector<RingTrace> traces = document_->annotations().traces;
+  const std::vector<KnotMark> knotMarks = document_->annotations().knots;
   std::filesystem::path folder;
   if (!document_->filePath().isEmpty())
     folder = QFileInfo(document_->filePath()).absolutePath().toStdString();
@@ -167,8 +168,8 @@ void MainWindow::fitGrowthField() {
                                        .arg(QString::fromStdString(folder.string())));
   fitJob_ = jobs_->start(
       tr("Fitting growth field"),
-      [detection, folder, block, current, photos, traces](const Progress& progress,
-                                                          const JobRunner::Preview& preview) -> QVariant {
+      [detection, folder, block, current, photos, traces, knotMarks](
+          const Progress& progress, const JobRunner::Preview& preview) -> QVariant {
         std::array<GrayImage8, 6> images;
         if (detection) {
           images = detection->arl;
@@ -184,7 +185,7 @@ void MainWindow::fitGrowthField() {
               std::make_shared<const std::pair<WoodParameters, GrowthRates>>(params, rates)));
         };
         return QVariant::fromValue(std::make_shared<const GrowthFitResult>(
-            kerf::fitGrowthField(images, block, current, photos, progress, traces, live)));
+            kerf::fitGrowthField(images, block, current, photos, progress, traces, live, knotMarks)));
       },
       [this](const QVariant& result) {
         fitJob_ = 0;
@@ -192,7 +193,7 @@ void MainWindow::fitGrowthField() {
         for (const QString& line : fit->report)
           logMessage(line.startsWith("warning") ? "warning" : "info", line);
         try {
-          document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"));
+          document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"), fit->knots);
         } catch (const InputError& e) {
           showError(tr("The fitted growth field is not valid: %1").arg(QString::fromUtf8(e.what())));
           modelChanged();  // back from the preview to the document's field
@@ -267,12 +268,14 @@ void MainWindow::useOtherPithCandidate() {
   if (!lastFit_ || !lastFit_->alternative) return;
   GrowthFitResult swapped = *lastFit_;
   const GrowthFitResult::Alternative other = *swapped.alternative;
-  swapped.alternative = GrowthFitResult::Alternative{swapped.params, swapped.rates, swapped.lossRings};
+  swapped.alternative =
+      GrowthFitResult::Alternative{swapped.params, swapped.rates, swapped.lossRings, swapped.knots};
   swapped.params = other.params;
   swapped.rates = other.rates;
   swapped.lossRings = other.lossRings;
+  swapped.knots = other.knots;
   try {
-    document_->applyGrowthField(swapped.params, swapped.rates, tr("Use other pith candidate"));
+    document_->applyGrowthField(swapped.params, swapped.rates, tr("Use other pith candidate"), swapped.knots);
   } catch (const InputError& e) {
     showError(tr("The other pith candidate is not a valid field: %1").arg(QString::fromUtf8(e.what())));
     return;

@@ -20,6 +20,9 @@ struct DemoOptions {
   // Also write the true rings as numbered traces in the Mokume annotation format (<F>_ann.png at
   // Mokume's 6.4 px/mm, pixel value = the ring's year), as a user who traced every ring would.
   bool numberedTraces = false;
+  // A knot from the pith through the block (Mokume Sec. 5.2.4), in the project, with its two centres
+  // marked as knot marks (the project's annotations and Mokume's <F>_knot.png).
+  bool knot = false;
 };
 
 // The demo block's true parameters: a 40 mm cube of ring-porous hardwood with its pith outside the block.

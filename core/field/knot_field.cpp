@@ -78,10 +78,8 @@ KnotSettings KnotSettings::fromParameters(const WoodParameters& p) {
 // Eq. 2 in the form m (1 + (m/M)^k)^(-1/k), m = min, M = max: algebraically the same, and free of
 // overflow for large k and of 0/0 at the pith (t = 0).
 float powerSmoothMin(float a, float b, float k) {
-  const float m = std::min(a, b), M = std::max(a, b);
-  if (!(m > 0.0f)) return std::max(m, 0.0f);
-  if (!std::isfinite(M)) return m;
-  return m * std::pow(1.0f + std::pow(m / M, k), -1.0f / k);
+  if (a > 0.0f && b > 0.0f && !std::isfinite(std::max(a, b))) return std::min(a, b);
+  return powerSmoothMinOf(a, b, k);
 }
 
 // Eq. 3.
@@ -104,9 +102,7 @@ float deadKnotFactor(float tau, float beta, const KnotSettings& s) {
 }
 
 float knotWindow(float ratio, const KnotSettings& s) {
-  if (ratio >= s.reachEnd) return 0.0f;
-  if (ratio <= s.reachStart) return 1.0f;
-  return 1.0f - smoothstep01((ratio - s.reachStart) / (s.reachEnd - s.reachStart));
+  return knotWindowOf(ratio, s.reachStart, s.reachEnd);
 }
 
 WoodColorMap woodColorMapFromParameters(const WoodParameters& p, float radiusMm) {

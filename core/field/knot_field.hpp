@@ -14,6 +14,7 @@
 // Every per-knot term is multiplied by a window that is exactly 0 once the distance d_b from the knot's
 // pseudo-nearest skeleton point reaches knots.reach_end x d_s, and beyond it T_b > t_s, so a knot farther
 // than that changes nothing, bit for bit. cull() uses that bound to list the knots that can reach a region.
+#include <cmath>
 #include <glm/vec3.hpp>
 #include <span>
 #include <vector>
@@ -38,6 +39,24 @@ struct KnotSettings {
 
 // Eq. 2, the power smooth minimum of two non-negative times; exact min(a, b) when either is 0.
 float powerSmoothMin(float a, float b, float k);
+// The same for any scalar type (float, or Ceres Jets in the block-knot fit,
+// fit/block_knot_fit.hpp), and knotWindow below: the float functions call these (one implementation).
+template <typename T>
+T powerSmoothMinOf(const T& a, const T& b, const T& k) {
+  using std::pow;
+  // m (1 + (m/M)^k)^(-1/k), m = min, M = max: Eq. 2 without overflow for large k or 0/0 at t = 0.
+  const T m = b < a ? b : a, M = a < b ? b : a;
+  if (!(m > T(0))) return m > T(0) ? m : T(0);
+  return m * pow(T(1) + pow(m / M, k), T(-1) / k);
+}
+template <typename T>
+T knotWindowOf(const T& ratio, float reachStart, float reachEnd) {
+  if (ratio >= T(reachEnd)) return T(0);
+  if (ratio <= T(reachStart)) return T(1);
+  T x = (ratio - T(reachStart)) / T(reachEnd - reachStart);
+  x = x < T(0) ? T(0) : (T(1) < x ? T(1) : x);
+  return T(1) - x * x * (T(3) - T(2) * x);
+}
 // Eq. 3, the amount of smoothing smin - min (<= 0: the union pushes the rings outward).
 float smoothingAmount(float a, float b, float k);
 // Sec. 4.2.1: k_knot inside the knot (t_s > T_b), k_stem outside, blended smoothly over k_transition.

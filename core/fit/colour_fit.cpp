@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "fit/ceres_progress.hpp"
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -72,19 +73,6 @@ struct TintPrior {
     for (int c = 0; c < 3; ++c) residual[c] = weight * (tint[c] - T(1));
     return true;
   }
-};
-
-class StopCallback final : public ceres::IterationCallback {
- public:
-  StopCallback(const Progress& p, int max) : progress_(p), max_(max) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    progress_.set(0.3 + 0.7 * std::min(1.0, (s.iteration + 1.0) / max_));
-    return progress_.stop.stop_requested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const Progress& progress_;
-  int max_;
 };
 
 glm::dvec3 toD(glm::vec3 v) {
@@ -197,7 +185,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   so.linear_solver_type = ceres::DENSE_QR;  // 32 parameters
   so.max_num_iterations = options.maxIterations;
   so.num_threads = 1;  // deterministic
-  StopCallback callback(progress, options.maxIterations);
+  CeresProgress callback(progress, options.maxIterations, 0.3, 1.0);
   so.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);

@@ -9,6 +9,7 @@
 
 #include "field/bspline.hpp"
 #include "field/growth_field.hpp"
+#include "fit/ceres_progress.hpp"
 #include "fit/gray_map.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -182,19 +183,6 @@ class Ridge final : public ceres::CostFunction {
   double w_;
 };
 
-class Callback final : public ceres::IterationCallback {
- public:
-  Callback(const Progress& p, int max) : progress_(p), max_(max) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    progress_.set(std::min(1.0, static_cast<double>(s.iteration + 1) / max_));
-    return progress_.stop.stop_requested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const Progress& progress_;
-  int max_;
-};
-
 }  // namespace
 
 std::vector<RateCoefficient> growthCoefficients(const GrowthRates& layout, const PithAxis& axis,
@@ -356,7 +344,7 @@ DistortionFitResult fitDistortions(const IsoContours& contours, const Block& blo
                        })
                                        : std::function<void(double)>(),
                        progress.stop};
-    Callback callback(sub, iterations);
+    CeresProgress callback(sub, iterations);
     so.callbacks.assign(1, &callback);
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);

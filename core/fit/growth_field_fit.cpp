@@ -5,6 +5,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <map>
 
 #include "field/growth_field.hpp"
@@ -45,13 +46,16 @@ void addCandidate(std::vector<std::string>& lines, const char* label, const Pith
 // Step 2 (Mokume Eq. 4-6): growth rates around the fitted axis, rings moved to whole years, rates scaled
 // to a median of 1 and the ring width with them (G unchanged), so growth.ring_width stays the typical ring
 // width in mm.
+// With knots (in years of width0): no image term (M would learn the knot's dense rings as extra rings),
+// and the rings are placed along the field with the knots merged in.
 GrowthRates fitRates(const IsoContours& contours, const Block& block, const PithAxis& axis, float width0,
                      const std::array<GrayImage8, 6>& images, WoodParameters& params,
-                     GrowthFieldFitReport& report, const Progress& progress) {
+                     GrowthFieldFitReport& report, const Progress& progress,
+                     const BlockKnots* knots = nullptr) {
   const bool anyImage =
       std::any_of(images.begin(), images.end(), [](const GrayImage8& i) { return !i.empty(); });
   const DistortionFitResult d =
-      fitDistortions(contours, block, axis, width0, {}, progress, anyImage ? &images : nullptr);
+      fitDistortions(contours, block, axis, width0, {}, progress, anyImage && !knots ? &images : nullptr);
   const GrowthField field(axis, width0, d.rates);
   const Stopwatch placementClock;
   GrowthRates rates;
@@ -90,8 +94,12 @@ GrowthRates fitRates(const IsoContours& contours, const Block& block, const Pith
       report.ringsFromGrayMap = true;
     } else {
       fitted = estimateRingLevels(
-          [&field, width0](glm::vec3 p) { return static_cast<double>(field.evaluate(p)) * width0; }, block,
-          images);
+          [&field, width0, knots](glm::vec3 p) {
+            if (!knots) return static_cast<double>(field.evaluate(p)) * width0;
+            const Cylindrical c = field.axis().toCylindrical(p);
+            return static_cast<double>(knots->merge(p, field.evaluate(c), c.radius).time) * width0;
+          },
+          block, images);
       levels.clear();
       for (float peak : fitted.peaksMm) levels.push_back(peak / width0);
     }
@@ -223,6 +231,46 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     if (preview && options.preview) options.preview(field.params, std::nullopt);
     if (options.pithOnly) {
       r.finalLossRings = r.rings.ringWidthMm > 0 ? candidate.loss.meanOverFaces / r.rings.ringWidthMm : 0;
+    } else if (options.fitKnots && !input.knotMarks.empty()) {
+      // Knots first, with the pith, on the undeformed field (Mokume fits them with G replaced by G_k,
+      // Sec. 5.2.4); the rates are then fitted to the contours away from them, so that they do not bend
+      // around a knot themselves, and the knots are refined on the final field below.
+      const KnotSettings settings = KnotSettings::fromParameters(field.params);
+      const PithAndKnotsFit joint =
+          fitPithAndKnots(contours, block, axis, r.rings.ringWidthMm, input.knotMarks, settings);
+      field.knots = joint.knots.knots;
+      field.knotSmoothStem = joint.knots.kStem;
+      r.knotPithMovedDeg =
+          glm::degrees(std::acos(std::min(1.0f, std::abs(glm::dot(joint.pith.direction, axis.direction)))));
+      r.knotPithMovedMm = std::max(axis.toCylindrical(joint.pith.origin).radius,
+                                   joint.pith.toCylindrical(axis.origin).radius);
+      field.params.pithOrigin = joint.pith.origin;
+      field.params.pithTilt = joint.tiltDeg;
+      field.params.pithAzimuth = joint.azimuthDeg;
+      const PithAxis knotAxis = PithAxis::fromAngles(joint.pith.origin, joint.tiltDeg, joint.azimuthDeg);
+      KnotSettings fitted = settings;
+      fitted.kStem = joint.knots.kStem;
+      if (anyImage) {
+        // Ring width and phase along the merged field in mm (smin(r, d_k / v_k)): the dense rings of the
+        // knot then fall on the same levels as the stem's instead of posing as extra rings.
+        const BlockKnots mm(joint.knots.knots, fitted, 1.0f);
+        r.rings = estimateRingLevels(
+            [&](glm::vec3 p) {
+              const float radius = knotAxis.toCylindrical(p, false).radius;
+              return static_cast<double>(mm.merge(p, radius, radius).time);
+            },
+            block, input.rings);
+        field.params.ringWidth = r.rings.ringWidthMm;
+        field.params.ringOffset = r.rings.ringOffset;
+      }
+      validate(field.params);
+      const GrowthField undeformed(knotAxis, r.rings.ringWidthMm, GrowthRates::uniform(block, knotAxis));
+      const IsoContours away = contoursAwayFromKnots(
+          contours, undeformed, BlockKnots(joint.knots.knots, fitted, r.rings.ringWidthMm));
+      r.contoursAwayFromKnots = away.count();
+      const BlockKnots inYears(joint.knots.knots, fitted, r.rings.ringWidthMm);
+      field.rates =
+          fitRates(away, block, knotAxis, r.rings.ringWidthMm, input.rings, field.params, r, sub, &inYears);
     } else {
       field.rates = fitRates(contours, block, axis, r.rings.ringWidthMm, input.rings, field.params, r, sub);
     }
@@ -248,12 +296,29 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
       report.alternativeNote = std::string("the other candidate cannot be used as a field: ") + e.what();
     }
   }
+  // Knots (Mokume Sec. 5.2.4, Eq. 7): merged into the fitted field from the user's knot marks.
+  if (options.fitKnots && !input.knotMarks.empty() && out.rates) {
+    const GrowthField stem(out.params, *out.rates);
+    KnotSettings settings = KnotSettings::fromParameters(out.params);
+    BlockKnotFitOptions knotOptions;
+    knotOptions.start = chosen.knots;  // from the undeformed field
+    if (!chosen.knots.empty()) settings.kStem = chosen.knotSmoothStem;
+    const BlockKnotFitResult knots = fitBlockKnots(contours, block, stem, input.knotMarks, settings,
+                                                   knotOptions, progress.part(0.95, 0.97));
+    out.knots = knots.knots;
+    if (knots.smoothnessFitted) out.params.knotSmoothStem = knots.kStem;
+    report.knots = knots.entries;
+    report.knotSmoothnessFitted = knots.smoothnessFitted;
+    report.knotSmoothStem = knots.kStem;
+    report.knotIterations = knots.iterations;
+    report.knotSeconds = knots.seconds;
+  }
   // Step 3: the colours of the wood and of each face, given the field (Mokume A.2.3).
   const bool photos =
       std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); });
   if (options.fitColours && photos && out.rates) {
     const ColourFitResult colours =
-        fitColours(block, out.params, *out.rates, input.photos, {}, progress.part(0.95, 0.99));
+        fitColours(block, out.params, *out.rates, input.photos, {}, progress.part(0.97, 0.99));
     out.params = colours.params;
     report.coloursFitted = true;
     report.colourL1Before = colours.l1Before;
@@ -266,6 +331,7 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   const PithAxis finalAxis =
       PithAxis::fromAngles(out.params.pithOrigin, out.params.pithTilt, out.params.pithAzimuth);
   const GrowthField final(out.params, out.rates ? *out.rates : GrowthRates::uniform(block, finalAxis));
+  const BlockKnots finalKnots(out.knots, KnotSettings::fromParameters(out.params), out.params.ringWidth);
   out.contours.resize(contours.count());
   parallelRows(contours.count(), [&](int c) {
     ContourResidual& cr = out.contours[c];
@@ -274,7 +340,8 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     std::vector<double> g;
     for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i) {
       cr.points.push_back(contours.points[i]);
-      g.push_back(final.evaluate(contours.points[i]));
+      const Cylindrical cyl = finalAxis.toCylindrical(contours.points[i]);
+      g.push_back(finalKnots.merge(contours.points[i], final.evaluate(cyl), cyl.radius).time);
     }
     std::vector<double> sorted = g;
     const double median = lowerMedian(sorted);
@@ -368,6 +435,32 @@ std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& 
     }
     lines.push_back("colours (Mokume A.2.3), mean |model - photo| per face: " + faces);
   }
+  for (const BlockKnotFitEntry& k : r.knots) {
+    std::string faces;
+    for (FaceId f : k.faces) faces += faceLetter(f);
+    if (!k.kept) {
+      lines.push_back(format("knot %d (marks on %s): skipped: %s", k.id, faces.c_str(), k.note.c_str()));
+      continue;
+    }
+    const BlockKnot& b = k.fitted;
+    lines.push_back(
+        format("knot %d (marks on %s, Mokume Sec. 5.2.4): %s; O = (%.2f, %.2f, %.2f) mm, "
+               "V = (%.4f, %.4f, %.4f), speed %.3f, axis moved %.2f deg by the fit",
+               k.id, faces.c_str(), k.note.c_str(), b.origin.x, b.origin.y, b.origin.z, b.direction.x,
+               b.direction.y, b.direction.z, b.speed, k.axisMovedDeg));
+    lines.push_back(
+        format("  iso-contour error near knot %d (%d points within 3 knot radii; %d points on %d "
+               "contours fitted): %.4f without a knot, %.4f initial, %.4f fitted (ring spacings)",
+               k.id, k.lossPoints, k.nearPoints, k.contours, k.lossWithout, k.lossInitial, k.lossFitted));
+  }
+  if (!r.knots.empty() && r.distortionsFitted)
+    lines.push_back(
+        format("knots: the pith refined together with them on the undeformed field (moved %.2f deg, "
+               "%.2f mm); distortions fitted to the %d contours away from them",
+               r.knotPithMovedDeg, r.knotPithMovedMm, r.contoursAwayFromKnots));
+  if (r.knotSmoothnessFitted)
+    lines.push_back(format("knots: k_stem (Eq. 7's smoothness s) fitted to %.3f, %d iterations, %.3f s",
+                           r.knotSmoothStem, r.knotIterations, r.knotSeconds));
   lines.push_back(
       format("time: contours %.3f s, anatomy %.3f s, grid search %.3f s, refinement %.3f s, rings %.3f s, "
              "distortions %.3f s, ring placement %.3f s, colours %.3f s",

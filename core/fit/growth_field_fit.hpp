@@ -13,6 +13,7 @@
 
 #include "field/growth_rates.hpp"
 #include "fit/anatomy_prior.hpp"
+#include "fit/block_knot_fit.hpp"
 #include "fit/iso_contours.hpp"
 #include "fit/pith_fit.hpp"
 #include "geometry/block.hpp"
@@ -32,6 +33,9 @@ struct GrowthFieldFitInput {
   // False: the images give no contours, only the ring levels and the image term (the editor, where the
   // detected contours became traces the user corrected).
   bool contoursFromImages = true;
+  // Knot centres marked on the faces (rings/annotations.hpp); marks sharing an id are one knot, fitted
+  // into the field after the distortions (Mokume Sec. 5.2.4, fit/block_knot_fit.hpp).
+  std::vector<KnotMark> knotMarks;
 };
 
 struct GrowthFieldFitOptions {
@@ -45,6 +49,8 @@ struct GrowthFieldFitOptions {
   bool fitAlternative = true;
   // Step 3, colour initialisation (fit/colour_fit.hpp), when there are face photos.
   bool fitColours = true;
+  // Knots from input.knotMarks (not with pithOnly).
+  bool fitKnots = true;
   // Live preview: called (from the fitting thread) with the undeformed field after the pith stage
   // (rates: none) and with the final field.
   std::function<void(const WoodParameters&, const std::optional<GrowthRates>&)> preview;
@@ -74,6 +80,14 @@ struct GrowthFieldFitReport {
   std::array<double, 6> colourL1Before{}, colourL1After{};  // mean |model - photo| per face (0..1)
   double colourSeconds = 0;
   double extractSeconds = 0, ringSeconds = 0, distortionSeconds = 0, placementSeconds = 0;
+  // Knots (Mokume Sec. 5.2.4): one entry per marked knot id; k_stem fitted when any knot was optimised.
+  std::vector<BlockKnotFitEntry> knots;
+  bool knotSmoothnessFitted = false;
+  float knotSmoothStem = 0;
+  int knotIterations = 0;
+  double knotPithMovedDeg = 0, knotPithMovedMm = 0;  // the pith refined with the knots (fitPithAndKnots)
+  int contoursAwayFromKnots = 0;                     // what the distortion stage fitted
+  double knotSeconds = 0;
 };
 
 // A whole field around one pith candidate.
@@ -82,6 +96,9 @@ struct GrowthFieldFitAlternative {
   std::optional<GrowthRates> rates;
   PithCandidate pith;
   double finalLossRings = 0;
+  // Knots fitted on this candidate's undeformed field (before the distortions; fit/block_knot_fit.hpp).
+  std::vector<BlockKnot> knots;
+  float knotSmoothStem = 0;
 };
 
 // One contour after the fit: where it is (block mm) and how far its points stray from their own ring.
@@ -100,6 +117,7 @@ struct GrowthFieldFitResult {
   // The field around the mirrored pith when the fit was ambiguous (options.fitAlternative).
   std::optional<GrowthFieldFitAlternative> alternative;
   std::vector<ContourResidual> contours;  // every contour fitted, with its residual under `params`
+  std::vector<BlockKnot> knots;           // the knots of the field (Project::knots)
 };
 
 // Throws InputError when there is nothing to fit (see minContours), Cancelled on request.

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "fit/ceres_progress.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -175,17 +176,6 @@ class ContourCost final : public ceres::CostFunction {
   double b2_;
 };
 
-class StopCallback final : public ceres::IterationCallback {
- public:
-  explicit StopCallback(const Progress& p) : progress_(p) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
-    return progress_.stop.stop_requested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const Progress& progress_;
-};
-
 // The anatomical prior's weight and fibre direction in frame coordinates; weight 0 without one.
 struct Prior {
   double weight = 0;  // anatomyWeight * confidence
@@ -262,7 +252,7 @@ Refined refineParams(const Samples& s, int levels, std::array<double, 4> x, cons
   so.gradient_tolerance = 1e-12;
   so.parameter_tolerance = 1e-8;
   so.num_threads = 1;  // the cost parallelises itself, deterministically
-  StopCallback stop(progress);
+  CeresProgress stop(progress);
   so.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);

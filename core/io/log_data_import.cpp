@@ -289,7 +289,7 @@ std::vector<float> readFloats(const json& v, const std::string& what) {
 
 }  // namespace
 
-void saveLogFile(const LogModel& log, const fs::path& path) {
+json logToJson(const LogModel& log) {
   validate(log);
   json pith = json::array();
   for (const glm::vec2& p : log.stem.pith) pith.push_back({p.x, p.y});
@@ -315,12 +315,14 @@ void saveLogFile(const LogModel& log, const fs::path& path) {
     for (const glm::vec3& c : log.colorMap.colors) colors.push_back({c.x, c.y, c.z});
     out["color_map"] = colors;
   }
-  writeTextAtomically(path, out.dump());
+  return out;
 }
 
-LogModel loadLogFile(const fs::path& path) {
-  const json in = readJsonFile(path);
-  const std::string where = "log file " + path.string();
+void saveLogFile(const LogModel& log, const fs::path& path) {
+  writeTextAtomically(path, logToJson(log).dump());
+}
+
+LogModel logFromJson(const json& in, const std::string& where) {
   if (!in.is_object() || in.value("format", "") != kLogFormat) {
     throw InputError(where + " is not a Kerf log (missing \"format\": \"kerf-log\")");
   }
@@ -367,6 +369,10 @@ LogModel loadLogFile(const fs::path& path) {
   }
   validate(log);
   return log;
+}
+
+LogModel loadLogFile(const fs::path& path) {
+  return logFromJson(readJsonFile(path), "log file " + path.string());
 }
 
 LogModel loadLog(const fs::path& path) {

@@ -6,6 +6,8 @@
 //  - Kerf's own log file (.kerflog, versioned JSON, written atomically).
 // Both Gran_1 forms give the same LogModel up to the maps' 8-bit quantisation (tested).
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
 
 #include "field/log_model.hpp"
 
@@ -31,6 +33,9 @@ WoodColorMap importColorMapImage(const std::filesystem::path& path);
 // Kerf's log file: {"format": "kerf-log", "version": 1, ...}; see docs/knots.md.
 void saveLogFile(const LogModel& log, const std::filesystem::path& path);
 LogModel loadLogFile(const std::filesystem::path& path);
+// The same JSON as a value (a project embeds it under "log"); `where` names the source in errors.
+nlohmann::json logToJson(const LogModel& log);
+LogModel logFromJson(const nlohmann::json& json, const std::string& where);
 
 // A log from a path: a Kerf log file, or a folder with Gran_1 JSON files (else its maps); the folder's
 // wood_bar_color.bmp becomes the log's colour map when present.

@@ -7,6 +7,7 @@
 
 #include "io/annotations_json.hpp"
 #include "io/atomic_file.hpp"
+#include "io/block_knots_json.hpp"
 #include "io/sample_folder.hpp"
 #include "util/error.hpp"
 
@@ -130,6 +131,8 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
               {"parameters", parametersToJson(project.params)}};
   if (project.rates) out["growth_rates"] = growthRatesToJson(*project.rates);
   if (!project.annotations.empty()) out["annotations"] = annotationsToJson(project.annotations);
+  if (project.log) out["log"] = projectLogToJson(*project.log);
+  if (!project.knots.empty()) out["knots"] = blockKnotsToJson(project.knots);
   if (project.cutPlane) {
     out["view"] = {{"cut_plane",
                     {{"offset_mm", project.cutPlane->offsetMm},
@@ -181,6 +184,8 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   if (in.contains("annotations") && !in["annotations"].is_null()) {
     project.annotations = annotationsFromJson(in["annotations"], project.block);
   }
+  if (in.contains("log") && !in["log"].is_null()) project.log = projectLogFromJson(in["log"]);
+  if (in.contains("knots") && !in["knots"].is_null()) project.knots = blockKnotsFromJson(in["knots"]);
   if (in.contains("view") && in["view"].is_object() && in["view"].contains("cut_plane")) {
     const json& cut = in["view"]["cut_plane"];
     if (!cut.is_object()) throw InputError("\"view.cut_plane\" must be an object");

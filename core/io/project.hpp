@@ -7,9 +7,11 @@
 #include <optional>
 #include <string>
 
+#include "field/block_knots.hpp"
 #include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
+#include "io/project_log.hpp"
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
 
@@ -32,6 +34,12 @@ struct Project {
   // The user's ring traces and knot marks (face mm; core/rings/annotations.hpp). Saved under the optional
   // key "annotations" (core/io/annotations_json.hpp).
   Annotations annotations;
+  // A log and the board cut from it (optional key "log"; io/project_log.hpp): the editor then shows the
+  // board's faces, rendered with the knot model.
+  std::optional<ProjectLog> log;
+  // Knots in the block's growth field (Mokume Sec. 5.2.4; fitted from knot marks or edited), optional key
+  // "knots" (io/block_knots_json.hpp).
+  std::vector<BlockKnot> knots;
 
   GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
 };

@@ -42,9 +42,10 @@ enum SeedSlot : std::uint32_t {
 
 }  // namespace
 
-WoodMaterial::WoodMaterial(const WoodParameters& params, const GrowthField& field)
+WoodMaterial::WoodMaterial(const WoodParameters& params, const GrowthField& field, const BlockKnots* knots)
     : params_(params),
       field_(field),
+      knots_(knots && !knots->empty() ? knots : nullptr),
       seed_(noise::mix(static_cast<std::uint32_t>(params.seed) * 7919u + 13u)) {}
 
 glm::vec3 WoodMaterial::undistort(glm::vec3 p, const Cylindrical& c, glm::vec3* fiberDirection) const {
@@ -135,7 +136,10 @@ float WoodMaterial::rayWeight(const Cylindrical& c) const {
 
 float WoodMaterial::year(glm::vec3 p) const {
   const PithAxis& axis = field_.axis();
-  return field_.evaluate(axis.toCylindrical(undistort(p, axis.toCylindrical(p, false), nullptr)));
+  const glm::vec3 u = undistort(p, axis.toCylindrical(p, false), nullptr);
+  const Cylindrical c = axis.toCylindrical(u);
+  const float stem = field_.evaluate(c);
+  return knots_ ? knots_->merge(u, stem, c.radius).time : stem;
 }
 
 WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDirection) const {
@@ -146,6 +150,12 @@ WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDire
   const Cylindrical c = axis.toCylindrical(u);
 
   out.year = field_.evaluate(c);
+  float knotDarkness = 0.0f;
+  if (knots_) {  // Mokume Sec. 5.2.4 Eq. 7
+    const BlockKnotSample k = knots_->merge(u, out.year, c.radius);
+    out.year = k.time;
+    knotDarkness = k.darkness;
+  }
   out.latewood = seasonOf(out.year);
   out.pore = poreWeight(c, out.latewood);
   out.ray = rayWeight(c);
@@ -173,6 +183,7 @@ WoodSample WoodMaterial::evaluate(glm::vec3 p, int faceIndex, bool withFiberDire
       glm::max(glm::mix(params_.latewoodColor, params_.sapwoodLatewoodColor, sap), glm::vec3(1e-3f));
   glm::vec3 color = early * glm::pow(late / early, glm::vec3(t));
   color = glm::mix(color, params_.rayColor, params_.rayOpacity * out.ray);
+  color -= knotDarkness * params_.knotDarkening;  // Larsson et al. 2022 Sec. 4.3
 
   static constexpr glm::vec3 WoodParameters::*kTints[6] = {
       &WoodParameters::faceTintA, &WoodParameters::faceTintB, &WoodParameters::faceTintC,

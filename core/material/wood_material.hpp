@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 
+#include "field/block_knots.hpp"
 #include "field/growth_field.hpp"
 #include "params/parameter_schema.hpp"
 
@@ -28,8 +29,9 @@ struct WoodSample {
 
 class WoodMaterial {
  public:
-  // The field and the parameters must outlive the material.
-  WoodMaterial(const WoodParameters& params, const GrowthField& field);
+  // The field, the parameters and the knots must outlive the material. Knots (Mokume Sec. 5.2.4) are
+  // merged into the growth time and darken the wood; nullptr or empty: none.
+  WoodMaterial(const WoodParameters& params, const GrowthField& field, const BlockKnots* knots = nullptr);
 
   // faceIndex 0..5 (A..F) applies that face's tint; -1 (cuts, volumes) applies none.
   WoodSample evaluate(glm::vec3 pMm, int faceIndex = -1, bool withFiberDirection = false) const;
@@ -51,6 +53,7 @@ class WoodMaterial {
 
   const WoodParameters& params_;
   const GrowthField& field_;
+  const BlockKnots* knots_;
   std::uint32_t seed_;
 };
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "io/nrrd_writer.hpp"
+#include "export/volume_writer.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -62,7 +62,7 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
     layout.keyValues.emplace_back("quantity", "color");
   }
 
-  NrrdWriter writer(path, layout);
+  const std::unique_ptr<VolumeWriter> writer = openVolumeWriter(path, layout);  // .nrrd or .vdb
   const std::size_t sliceSamples = static_cast<std::size_t>(n.x) * n.y;
   std::vector<float> floats(growth ? sliceSamples : 0);
   std::vector<std::uint8_t> bytes(growth ? 0 : sliceSamples * 3);
@@ -86,17 +86,17 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
                  },
                  {nullptr, progress.stop});
     if (growth)
-      writer.writeSlice(std::span<const float>(floats));
+      writer->writeSlice(std::span<const float>(floats));
     else
-      writer.writeSlice(std::span<const std::uint8_t>(bytes));
+      writer->writeSlice(std::span<const std::uint8_t>(bytes));
     progress.set(static_cast<double>(z + 1) / n.z);
   }
-  writer.finish();
+  writer->finish();
   VolumeExportResult result;
   result.size = n;
   result.spacingMm = spacing;
   result.samples = sliceSamples * n.z;
-  result.bytes = result.samples * (growth ? 4 : 3);
+  result.bytes = std::filesystem::file_size(path);  // VDB is compressed
   return result;
 }
 

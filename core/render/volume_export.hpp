@@ -1,6 +1,7 @@
 #pragma once
-// Volumes of the wood model written as NRRD (io/nrrd_writer.hpp), streamed one z slice at a time so
-// a 512^3 volume needs memory for one slice, not the volume.
+// Volumes of the wood model written as NRRD (io/nrrd_writer.hpp) or OpenVDB (export/vdb_writer.hpp), by
+// the path's extension, computed one z slice at a time. A NRRD is streamed to disk, so a 512^3 volume
+// needs memory for one slice; a VDB grid is held in memory until it is written (docs/export.md).
 #include <filesystem>
 #include <string_view>
 
@@ -20,7 +21,7 @@ struct VolumeExportResult {
   glm::ivec3 size{0};
   glm::vec3 spacingMm{0};
   std::size_t samples = 0;
-  std::size_t bytes = 0;
+  std::size_t bytes = 0;  // size of the file written
 };
 
 // `resolution` samples along the block's longest side (1..4096); the other sides get the same spacing,

@@ -4,15 +4,18 @@
 
 namespace kerf {
 
-WoodModel::WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates)
+WoodModel::WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates,
+                     const std::vector<BlockKnot>& knots)
     : block_(block) {
   validate(params);
   params_ = std::make_unique<const WoodParameters>(params);
   field_ = std::make_unique<const GrowthField>(*params_, rates);
-  material_ = std::make_unique<const WoodMaterial>(*params_, *field_);
+  knots_ =
+      std::make_unique<const BlockKnots>(knots, KnotSettings::fromParameters(*params_), params_->ringWidth);
+  material_ = std::make_unique<const WoodMaterial>(*params_, *field_, knots_.get());
 }
 
 WoodModel::WoodModel(const Project& project)
-    : WoodModel(project.block, project.params, project.effectiveRates()) {}
+    : WoodModel(project.block, project.params, project.effectiveRates(), project.knots) {}
 
 }  // namespace kerf

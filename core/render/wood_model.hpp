@@ -4,6 +4,7 @@
 // evaluate it at once.
 #include <memory>
 
+#include "field/block_knots.hpp"
 #include "field/growth_field.hpp"
 #include "geometry/block.hpp"
 #include "material/wood_material.hpp"
@@ -16,7 +17,9 @@ struct Project;
 class WoodModel {
  public:
   // Validates the parameters and the rates (InputError).
-  WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates);
+  // knots: the block's knots (Mokume Sec. 5.2.4), merged with the settings of the knots.* parameters.
+  WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates,
+            const std::vector<BlockKnot>& knots = {});
   explicit WoodModel(const Project& project);
   WoodModel(const WoodModel&) = delete;
   WoodModel& operator=(const WoodModel&) = delete;
@@ -24,6 +27,7 @@ class WoodModel {
   const Block& block() const { return block_; }
   const WoodParameters& params() const { return *params_; }
   const GrowthField& field() const { return *field_; }
+  const BlockKnots& knots() const { return *knots_; }
   const WoodMaterial& material() const { return *material_; }
 
   WoodSample evaluate(glm::vec3 pMm, int faceIndex = -1, bool withFiberDirection = false) const {
@@ -34,6 +38,7 @@ class WoodModel {
   Block block_;
   std::unique_ptr<const WoodParameters> params_;  // heap: the material keeps references
   std::unique_ptr<const GrowthField> field_;
+  std::unique_ptr<const BlockKnots> knots_;
   std::unique_ptr<const WoodMaterial> material_;
 };
 

@@ -122,6 +122,25 @@ class DocumentTest : public QObject {
     QCOMPARE(document_.undoStack()->count(), 1);
   }
 
+  // A fitted field brings its knots (Mokume Sec. 5.2.4); they come and go with it in one undo step.
+  void fittedKnotsAreUndoneWithTheField() {
+    const WoodParameters params = document_.project().params;
+    const std::vector<BlockKnot> before = document_.project().knots;
+    const std::vector<BlockKnot> knots = {BlockKnot{0, {12, 0, -75}, {0, 0.2f, 1}, 0.1f}};
+    const int steps = document_.undoStack()->count();
+    document_.applyGrowthField(params, document_.project().rates, "Fit growth field", knots);
+    QCOMPARE(document_.undoStack()->count(), steps + 1);
+    QVERIFY(document_.project().knots == knots);
+    QCOMPARE(document_.model()->knots().knots().size(), std::size_t(1));
+    document_.undoStack()->undo();
+    QVERIFY(document_.project().knots == before);
+    QCOMPARE(document_.model()->knots().knots().size(), before.size());
+    // A bad knot is refused, naming it, before it reaches the undo stack.
+    const std::vector<BlockKnot> bad = {BlockKnot{0, {0, 0, 0}, {0, 0, 0}, 0.1f}};
+    QVERIFY_THROWS_EXCEPTION(InputError, document_.applyGrowthField(params, std::nullopt, "bad", bad));
+    QCOMPARE(document_.undoStack()->count(), steps + 1);
+  }
+
   void ringJobsSayWhatIsMissing() {
     const Block block = document_.project().block;
     QVERIFY_THROWS_EXCEPTION(InputError, detectRings({}, block));  // no photos
@@ -189,6 +208,26 @@ class DocumentTest : public QObject {
     document_.undoStack()->undo();  // back to clean: the copy goes away
     autosave.saveNow();
     QVERIFY(!QFile::exists(autosave.currentFile()));
+  }
+
+  // The timer's path: written on a worker thread, not rewritten while nothing changes, removed when the
+  // document is back to clean.
+  void autosaveTimerWritesOnlyChanges() {
+    QTemporaryDir dir;
+    Autosave autosave(&document_, dir.path(), 40);
+    QSignalSpy saved(&autosave, &Autosave::saved);
+    document_.editParameter(indexOf("growth.ring_width"), scalar(5.0f), true);
+    QTRY_COMPARE(saved.count(), 1);
+    QVERIFY(QFile::exists(autosave.currentFile()));
+    QCOMPARE(loadProject(autosave.currentFile().toStdString()).params.ringWidth, 5.0f);
+    QTest::qWait(300);  // several ticks, nothing changed
+    QCOMPARE(saved.count(), 1);
+    document_.editParameter(indexOf("growth.ring_width"), scalar(4.0f), true);
+    QTRY_COMPARE(saved.count(), 2);
+    QCOMPARE(loadProject(autosave.currentFile().toStdString()).params.ringWidth, 4.0f);
+    document_.undoStack()->undo();
+    document_.undoStack()->undo();
+    QTRY_VERIFY(!QFile::exists(autosave.currentFile()));
   }
 
  private:

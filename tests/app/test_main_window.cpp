@@ -21,6 +21,7 @@
 #include "faces_view.hpp"
 #include "field/growth_field.hpp"
 #include "gl/surface_format.hpp"
+#include "image_change.hpp"
 #include "job_runner.hpp"
 #include "log_panel.hpp"
 #include "main_window.hpp"
@@ -30,26 +31,13 @@
 #include "window_grab.hpp"
 
 using namespace kerf;
+using kerf::testing::changedShare;
 
 namespace {
 constexpr int kTimeoutMs = 60000;
 
 QPoint toPoint(glm::vec3 px) {
   return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
-}
-
-// Share of pixels that differ noticeably between two pictures of the same size.
-double changedShare(const QImage& a, const QImage& b) {
-  if (a.size() != b.size() || a.isNull()) return 1.0;
-  const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
-  int changed = 0;
-  for (int row = 0; row < x.height(); ++row)
-    for (int col = 0; col < x.width(); ++col) {
-      const QRgb p = x.pixel(col, row), q = y.pixel(col, row);
-      changed +=
-          std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q)) > 24;
-    }
-  return static_cast<double>(changed) / (x.width() * x.height());
 }
 
 QString artifact(const QString& name) {

@@ -11,6 +11,21 @@
 
 namespace kerf::testing {
 
+// The same for any field g (e.g. a growth field with knots merged in).
+template <typename Field>
+inline GrayImage8 renderRingImageOf(const Field& g, const Block& block, FaceId face, int px, float offset) {
+  GrayImage8 im;
+  im.width = im.height = px;
+  im.pixels.resize(static_cast<std::size_t>(px) * px);
+  for (int y = 0; y < px; ++y)
+    for (int x = 0; x < px; ++x) {
+      const double v = g(block.pixelCenter(face, x, y, {px, px}));
+      const double i = std::pow((std::cos(2 * std::numbers::pi * (v - offset)) + 1) / 2, 10.0);
+      im.pixels[static_cast<std::size_t>(y) * px + x] = static_cast<std::uint8_t>(std::lround(255 * i));
+    }
+  return im;
+}
+
 inline GrayImage8 renderRingImage(const GrowthField& field, const Block& block, FaceId face, int px,
                                   float offset) {
   GrayImage8 im;

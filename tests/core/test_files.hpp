@@ -19,6 +19,13 @@ inline std::filesystem::path scratchFolder(const std::string& group, const std::
   return dir;
 }
 
+// KERF_TEST_ARTIFACTS/group/name, its folder created (the file itself is left as it is).
+inline std::filesystem::path artifactFile(const std::string& group, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(KERF_TEST_ARTIFACTS) / group;
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
 // Images are stored as 8-bit PNG, so 1/255 of rounding is expected; pores and ring edges may move by a
 // pixel between compilers, which the share tolerance absorbs.
 struct GoldenTolerance {

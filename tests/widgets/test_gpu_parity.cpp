@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "demo/demo_block.hpp"
 #include "gl/gpu_image_renderer.hpp"
 #include "gl_renderer_fixture.hpp"
@@ -82,6 +84,30 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
     for (FaceId face : {FaceId::A, FaceId::B, FaceId::E})
       compare(renderFace(model, face, {96, 96}), renderer_->renderFace(model, face, {96, 96}),
               QString("partial_azimuths_face_%1").arg(faceLetter(face)));
+  }
+
+  // Knots in the block (Mokume Sec. 5.2.4): two knots from the pith through the block, merged by the
+  // smooth minimum and darkened, on faces and a cut.
+  void blockKnots() {
+    Project project = demoProject();
+    const WoodParameters& p = project.params;
+    const PithAxis axis = PithAxis::fromAngles(p.pithOrigin, p.pithTilt, p.pithAzimuth);
+    for (const glm::vec3 target : {glm::vec3(4, 6, 8), glm::vec3(-10, -12, 14)}) {
+      const glm::vec3 onPith = axis.origin + glm::dot(target - axis.origin, axis.direction) * axis.direction;
+      BlockKnot knot;
+      knot.id = static_cast<int>(project.knots.size());
+      knot.origin = onPith;
+      knot.direction = glm::normalize(target - onPith + glm::vec3(0, 0.2f * glm::length(target - onPith), 0));
+      knot.speed = 0.14f;
+      project.knots.push_back(knot);
+    }
+    const WoodModel model(project);
+    QCOMPARE(static_cast<int>(model.knots().knots().size()), 2);
+    for (FaceId face : kAllFaces)
+      compare(renderFace(model, face, {96, 96}), renderer_->renderFace(model, face, {96, 96}),
+              QString("knots_face_%1").arg(faceLetter(face)));
+    const CutPlane plane({0, 0, 0}, {0.2f, 1.0f, 0.4f});
+    compare(renderCut(model, plane, 2.5f), renderer_->renderCut(model, plane, 2.5f), "knots_cut");
   }
 
  private:

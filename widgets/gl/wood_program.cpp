@@ -4,6 +4,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QVector3D>
+#include <algorithm>
 #include <stdexcept>
 
 #include "params/parameter_schema.hpp"
@@ -57,6 +58,17 @@ void WoodProgram::setModel(const WoodModel& model) {
   program_.setUniformValue("u_axisDirection", toQt(axis.direction));
   program_.setUniformValue("u_axisReference", toQt(axis.reference));
   program_.setUniformValue("u_axisBinormal", toQt(axis.binormal));
+
+  // Knots in the block (shaders/wood_model.glsl, kMaxBlockKnots).
+  const std::vector<BlockKnot>& knots = model.knots().knots();
+  const int knotCount = std::min(static_cast<int>(knots.size()), kMaxBlockKnotsOnGpu);
+  program_.setUniformValue("u_blockKnotCount", knotCount);
+  for (int i = 0; i < knotCount; ++i) {
+    const QByteArray index = "[" + QByteArray::number(i) + "]";
+    program_.setUniformValue(("u_blockKnotOrigin" + index).constData(), toQt(knots[i].origin));
+    program_.setUniformValue(("u_blockKnotDirection" + index).constData(), toQt(knots[i].direction));
+    program_.setUniformValue(("u_blockKnotSpeed" + index).constData(), knots[i].speed);
+  }
 
   const GrowthRates& rates = field.rates();
   QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();

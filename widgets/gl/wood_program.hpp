@@ -11,6 +11,10 @@
 
 namespace kerf {
 
+// The most block knots the shader evaluates (kMaxBlockKnots in shaders/wood_model.glsl); more are
+// ignored on the GPU.
+inline constexpr int kMaxBlockKnotsOnGpu = 8;
+
 class WoodProgram {
  public:
   // Compiles `vertexFile` and `fragmentFile` (names in the :/shaders resource) with the wood model

@@ -1,0 +1,75 @@
+// export: faces, cuts, volumes and depth stacks in the format the output path's extension names
+// (core/export/export_job.hpp, docs/export.md).
+#include <cstdio>
+
+#include "command.hpp"
+#include "export/export_job.hpp"
+#include "io/project.hpp"
+#include "util/error.hpp"
+
+namespace kerf::cli {
+
+Command addExportCommand(CLI::App& app) {
+  auto* command = app.add_subcommand(
+      "export",
+      "Export a face or cut image (.png/.tif/.exr), a volume (.nrrd/.vdb) or a depth stack (folder)");
+  struct Options {
+    std::string document, out, face, plane, layer = "colour", exrType = "half", quantity = "growth",
+                                            depthStack;
+    float pxPerMm = 10.0f;
+    int samples = 2, resolution = 128;
+    bool noLayers = false;
+  };
+  auto o = std::make_shared<Options>();
+  command->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
+  command
+      ->add_option("--out", o->out,
+                   "Output: .png .tif .tiff .exr (image), .nrrd .vdb (volume), a folder (--depth-stack)")
+      ->required();
+  command->add_option("--face", o->face, "Image of face A..F");
+  command->add_option("--plane", o->plane,
+                      "Image of the cut px,py,pz,nx,ny,nz (a point and a normal, block mm)");
+  command
+      ->add_option("--px-per-mm", o->pxPerMm, "Image resolution; stored in the file as DPI and mm per pixel")
+      ->check(CLI::Range(0.01f, 400.0f));
+  command->add_option("--samples", o->samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
+  command->add_option("--layer", o->layer, "What a PNG holds: colour, growth (16-bit) or rings")
+      ->check(CLI::IsMember({"colour", "color", "growth", "rings"}));
+  command->add_flag("--no-layers", o->noLayers, "TIFF/EXR: colour only, without the growth and rings layers");
+  command
+      ->add_option("--exr-type", o->exrType, "EXR colour and rings channels: half or float (growth is float)")
+      ->check(CLI::IsMember({"half", "float"}));
+  command->add_option("--quantity", o->quantity, "Volume: growth (float years) or color (RGB)")
+      ->check(CLI::IsMember({"growth", "color", "colour"}));
+  command->add_option("--res", o->resolution, "Volume: samples along the block's longest side")
+      ->check(CLI::Range(1, 4096));
+  command->add_option(
+      "--depth-stack", o->depthStack,
+      "FACE,STEP_MM,DEPTH_MM: the face after removing 0, STEP, .. DEPTH mm, as numbered PNGs");
+  return {command, [o](Context& context) {
+            ExportRequest request;
+            request.out = o->out;
+            if (!o->face.empty()) {
+              const auto face = o->face.size() == 1 ? faceFromLetter(o->face[0]) : std::nullopt;
+              if (!face) throw InputError("--face must be one of A, B, C, D, E, F (not \"" + o->face + "\")");
+              request.face = face;
+            }
+            if (!o->plane.empty()) request.plane = parsePlane(o->plane);
+            request.pxPerMm = o->pxPerMm;
+            request.samples = o->samples;
+            request.image.pngLayer = imageLayerFromName(o->layer);
+            request.image.extraLayers = !o->noLayers;
+            request.image.exrHalf = o->exrType == "half";
+            request.quantity = volumeQuantityFromName(o->quantity);
+            request.resolution = o->resolution;
+            if (!o->depthStack.empty()) request.depthStack = parseDepthStack(o->depthStack);
+            exportKindOf(request);  // a bad path or option combination fails before the project is read
+            const Project project = loadDocument(o->document);
+            const WoodModel model(project);
+            const ExportSummary summary = runExport(model, request, context.progress());
+            context.samples = summary.samples;
+            std::printf("%s\n", summary.message.c_str());
+          }};
+}
+
+}  // namespace kerf::cli

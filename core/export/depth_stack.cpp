@@ -1,0 +1,124 @@
+#include "export/depth_stack.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+#include "util/error.hpp"
+#include "util/number_list.hpp"
+#include "util/parallel.hpp"
+
+namespace kerf {
+namespace {
+
+// How far the block reaches behind a face (its thickness along the face's normal).
+float thicknessBehind(const Block& block, FaceId face) {
+  const glm::vec3 n = glm::abs(block.face(face).normal);
+  return glm::dot(n, block.size());
+}
+
+}  // namespace
+
+DepthStackOptions parseDepthStack(const std::string& text) {
+  const auto comma = text.find(',');
+  const auto face = comma == 1 ? faceFromLetter(text[0]) : std::nullopt;
+  if (!face) throw InputError("--depth-stack takes FACE,STEP_MM,DEPTH_MM, e.g. A,0.5,5 (face A..F)");
+  const std::vector<float> numbers = parseNumberList(text.substr(2), "--depth-stack");
+  if (numbers.size() != 2) throw InputError("--depth-stack takes FACE,STEP_MM,DEPTH_MM, e.g. A,0.5,5");
+  DepthStackOptions options;
+  options.face = *face;
+  options.stepMm = numbers[0];
+  options.depthMm = numbers[1];
+  if (!(options.stepMm > 0.0f)) throw InputError("--depth-stack: the step must be more than 0 mm");
+  if (!(options.depthMm >= 0.0f)) throw InputError("--depth-stack: the depth must be 0 mm or more");
+  return options;
+}
+
+LayeredImage renderFaceAtDepth(const WoodModel& model, FaceId face, float depthMm, float pxPerMm, int samples,
+                               const Progress& progress) {
+  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
+    throw InputError("pixels per mm must be a positive number");
+  if (samples < 1 || samples > 8) throw InputError("samples per pixel side must be 1..8");
+  const Block& block = model.block();
+  const float thickness = thicknessBehind(block, face);
+  if (!(depthMm >= 0.0f) || depthMm >= thickness) {
+    std::ostringstream s;
+    s << "a depth of " << depthMm << " mm is outside the block (face " << faceLetter(face) << " has "
+      << thickness << " mm of wood behind it)";
+    throw InputError(s.str());
+  }
+  const glm::ivec2 size = block.faceImageSize(face, pxPerMm);
+  const glm::vec3 inward = -block.face(face).normal * depthMm;
+  LayeredImage out;
+  out.pxPerMm = pxPerMm;
+  out.colour = Image(size.x, size.y, 3);
+  out.growth = Image(size.x, size.y, 1);
+  out.rings = Image(size.x, size.y, 1);
+  const float weight = 1.0f / (samples * samples);
+  parallelRows(
+      size.y,
+      [&](int y) {
+        for (int x = 0; x < size.x; ++x) {
+          glm::vec3 sum(0.0f);
+          for (int sy = 0; sy < samples; ++sy)
+            for (int sx = 0; sx < samples; ++sx) {
+              const glm::vec2 pos(x + (sx + 0.5f) / samples, y + (sy + 0.5f) / samples);
+              sum += model.evaluate(block.imageToBlock(face, pos, size) + inward).color;
+            }
+          float* c = out.colour.pixel(x, y);
+          c[0] = sum.x * weight, c[1] = sum.y * weight, c[2] = sum.z * weight;
+          out.growth.pixel(x, y)[0] = model.material().year(block.pixelCenter(face, x, y, size) + inward);
+        }
+      },
+      progress);
+  addRingLines(model, out);
+  return out;
+}
+
+DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOptions& options,
+                                  const std::filesystem::path& folder, const Progress& progress) {
+  if (!(options.stepMm > 0.0f)) throw InputError("the depth step must be more than 0 mm");
+  if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder))
+    throw InputError("cannot write the depth stack into " + folder.string() + ": it is a file, not a folder");
+  DepthStackResult result;
+  const int count = static_cast<int>(std::floor(options.depthMm / options.stepMm + 1e-4f)) + 1;
+  if (count > 10000) throw InputError("the depth stack would have more than 10000 images; raise the step");
+  for (int i = 0; i < count; ++i) result.depthsMm.push_back(i * options.stepMm);
+  // Check the deepest surface before writing anything.
+  const float thickness = thicknessBehind(model.block(), options.face);
+  if (result.depthsMm.back() >= thickness) {
+    std::ostringstream s;
+    s << "a depth of " << result.depthsMm.back() << " mm is outside the block (face "
+      << faceLetter(options.face) << " has " << thickness << " mm of wood behind it)";
+    throw InputError(s.str());
+  }
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw InputError("cannot create the folder " + folder.string() + ": " + error.message());
+
+  ImageWriteOptions write;
+  write.pngLayer = options.layer;
+  std::ostringstream csv, json;
+  csv << "index,file,depth_mm\n";
+  json << "{\"face\":\"" << faceLetter(options.face) << "\",\"px_per_mm\":" << options.pxPerMm
+       << ",\"layer\":\"" << imageLayerName(options.layer) << "\",\"images\":[";
+  for (int i = 0; i < count; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "%c_%03d.png", faceLetter(options.face), i);
+    const LayeredImage image =
+        renderFaceAtDepth(model, options.face, result.depthsMm[i], options.pxPerMm, options.samples,
+                          progress.part(double(i) / count, double(i + 1) / count));
+    writeLayeredImage(folder / name, image, write);
+    result.files.push_back(folder / name);
+    csv << i << "," << name << "," << result.depthsMm[i] << "\n";
+    json << (i ? "," : "") << "{\"file\":\"" << name << "\",\"depth_mm\":" << result.depthsMm[i] << "}";
+  }
+  json << "]}\n";
+  writeTextAtomically(folder / "depths.json", json.str());
+  result.index = folder / "depths.csv";
+  writeTextAtomically(result.index, csv.str());
+  return result;
+}
+
+}  // namespace kerf

@@ -1,0 +1,113 @@
+#include "export/export_job.hpp"
+
+#include <sstream>
+
+#include "export/file_extension.hpp"
+#include "util/error.hpp"
+
+namespace kerf {
+namespace {
+
+bool isImageExtension(const std::string& e) {
+  return e == ".png" || e == ".tif" || e == ".tiff" || e == ".exr";
+}
+bool isVolumeExtension(const std::string& e) {
+  return e == ".nrrd" || e == ".vdb";
+}
+bool isPartExtension(const std::string& e) {
+  return e == ".obj" || e == ".glb";
+}
+
+std::string sizeText(int width, int height, float pxPerMm) {
+  std::ostringstream s;
+  s.precision(4);
+  s << width << " x " << height << " px, " << pxPerMm << " px/mm = " << pxPerMm * 25.4f << " dpi";
+  return s.str();
+}
+
+// The mesh part export (issue 7: a placed OBJ/STL/PLY part baked with the block's wood, written as
+// OBJ+MTL+PNG or binary glTF) goes here.
+ExportSummary exportPart(const WoodModel&, const ExportRequest& request, const Progress&) {
+  throw InputError("exporting a textured part (" + lowerExtension(request.out) + ") is not yet supported");
+}
+
+}  // namespace
+
+ExportKind exportKindOf(const ExportRequest& request) {
+  const std::string e = lowerExtension(request.out);
+  if (request.out.empty()) throw InputError("no output path given");
+  if (request.depthStack) {
+    if (isImageExtension(e) || isVolumeExtension(e) || isPartExtension(e))
+      throw InputError("a depth stack is written into a folder, not a " + e +
+                       " file: " + request.out.string());
+    return ExportKind::DepthStack;
+  }
+  if (isImageExtension(e)) {
+    if (request.face.has_value() == request.plane.has_value())
+      throw InputError("an image export needs either a face (--face A..F) or a cut plane (--plane), not " +
+                       std::string(request.face ? "both" : "neither"));
+    return ExportKind::Image;
+  }
+  if (isVolumeExtension(e)) return ExportKind::Volume;
+  if (isPartExtension(e)) return ExportKind::Part;
+  throw InputError("cannot tell what to export from \"" + request.out.string() +
+                   "\": use .png, .tif, .tiff or .exr for an image, .nrrd or .vdb for a volume, "
+                   "or a folder with --depth-stack");
+}
+
+ExportSummary runExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {
+  ExportSummary summary;
+  summary.kind = exportKindOf(request);
+  const std::string out = request.out.string();
+  switch (summary.kind) {
+    case ExportKind::Image: {
+      const LayeredImage image = request.face ? renderFaceLayers(model, *request.face, request.pxPerMm,
+                                                                 request.samples, progress.part(0, 0.95))
+                                              : renderCutLayers(model, *request.plane, request.pxPerMm,
+                                                                request.samples, progress.part(0, 0.95));
+      writeLayeredImage(request.out, image, request.image);
+      progress.set(1.0);
+      const std::size_t pixels = static_cast<std::size_t>(image.colour.width) * image.colour.height;
+      summary.samples = pixels * (request.samples * request.samples + 1);
+      summary.message =
+          std::string(request.face ? "face " + std::string(1, faceLetter(*request.face)) : "cut") +
+          " written to " + out + " (" + sizeText(image.colour.width, image.colour.height, request.pxPerMm) +
+          ")";
+      return summary;
+    }
+    case ExportKind::Volume: {
+      const VolumeExportResult result =
+          exportVolume(model, request.quantity, request.resolution, request.out, progress);
+      summary.samples = result.samples;
+      std::ostringstream s;
+      s.precision(4);
+      s << "volume written to " << out << " (" << result.size.x << " x " << result.size.y << " x "
+        << result.size.z << " samples, " << result.spacingMm.x << " mm spacing, " << result.bytes / 1048576.0
+        << " MiB)";
+      summary.message = s.str();
+      return summary;
+    }
+    case ExportKind::DepthStack: {
+      DepthStackOptions options = *request.depthStack;
+      options.pxPerMm = request.pxPerMm;
+      options.samples = request.samples;
+      options.layer = request.image.pngLayer;
+      const DepthStackResult result = exportDepthStack(model, options, request.out, progress);
+      const glm::ivec2 size = model.block().faceImageSize(options.face, options.pxPerMm);
+      summary.samples = result.files.size() * static_cast<std::size_t>(size.x) * size.y *
+                        (options.samples * options.samples + 1);
+      std::ostringstream s;
+      s.precision(4);
+      s << "depth stack written to " << out << " (" << result.files.size() << " images of face "
+        << faceLetter(options.face) << ", 0 to " << result.depthsMm.back() << " mm, "
+        << sizeText(size.x, size.y, options.pxPerMm) << "; index depths.csv)";
+      summary.message = s.str();
+      return summary;
+    }
+    case ExportKind::Part:
+      return exportPart(model, request, progress);
+  }
+  return summary;
+}
+
+}  // namespace kerf

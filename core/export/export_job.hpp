@@ -1,0 +1,50 @@
+#pragma once
+// One export, as `kerf-cli export` and the editor's File > Export dialogs describe it: what to write is
+// picked from the output path's extension (docs/export.md):
+//   .png .tif .tiff .exr   a face (face) or a cut (plane) image with layers (export/image_export.hpp)
+//   .nrrd .vdb             a volume of the growth field or the colour (render/volume_export.hpp)
+//   a folder               a depth stack (depthStack set; export/depth_stack.hpp)
+//   .obj .glb              a textured part: not yet supported (see exportPart below)
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "export/depth_stack.hpp"
+#include "export/image_export.hpp"
+#include "render/volume_export.hpp"
+
+namespace kerf {
+
+enum class ExportKind { Image, Volume, DepthStack, Part };
+
+struct ExportRequest {
+  std::filesystem::path out;
+  // Images: exactly one of face and plane.
+  std::optional<FaceId> face;
+  std::optional<CutPlane> plane;
+  float pxPerMm = 10.0f;
+  int samples = 2;
+  ImageWriteOptions image;
+  // Volumes.
+  VolumeQuantity quantity = VolumeQuantity::Growth;
+  int resolution = 128;
+  // Depth stacks (face, step, depth; pxPerMm, samples and image.pngLayer come from the fields above).
+  std::optional<DepthStackOptions> depthStack;
+};
+
+// The kind `request` asks for. Throws InputError for an unknown extension, an image without a face or
+// plane (or with both), or a depth stack whose path has an image or volume extension.
+ExportKind exportKindOf(const ExportRequest& request);
+
+struct ExportSummary {
+  ExportKind kind = ExportKind::Image;
+  std::string message;      // one line for the user: what was written where
+  std::size_t samples = 0;  // model evaluations, for --stats
+};
+
+// Checks the request, renders and writes, atomically (a depth stack: each file). Throws InputError
+// (with a message for the user), Cancelled.
+ExportSummary runExport(const WoodModel& model, const ExportRequest& request, const Progress& progress = {});
+
+}  // namespace kerf

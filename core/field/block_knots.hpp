@@ -1,0 +1,102 @@
+#pragma once
+// Knots in a block's growth field, Mokume Sec. 5.2.4 Eq. 7:
+//   G_k(p) = smooth_min(G(p), G(omega_k, p), s)
+// G is the block's growth field (years, field/growth_field.hpp). The knot's own growth field is, as in
+// the authors' code (MOKUME_CONVENTIONS.md B.2, "knot"), a scaled distance from the knot axis:
+//   T_k(p) = d_k(p) / (v_k w)
+// d_k the distance from the knot's axis, a half-line from where the branch leaves the pith; v_k the
+// knot's growth speed as a fraction of the stem's (the authors' 1 / knot_density; Larsson et al. 2022
+// Sec. 4.1) and w the ring width (growth.ring_width). So a knot ring is v_k stem rings wide, and the
+// knot itself (T_k < G) is a cone whose radius grows as v_k times the distance from the pith.
+//
+// The smooth minimum is Larsson et al. 2022's power smooth minimum (Eq. 2) with Mokume's single
+// smoothness s = knots.k_stem (no adaptive k: see knotTerm), each knot's smoothing faded out by the
+// window of knots.reach_start / reach_end on d_k / d_s (d_s the distance from the pith axis), and
+// many knots merged as in Eq. 6: t = min(G, T_1..T_n) + sum_i window_i (smin_i - min_i). Beyond
+// reach_end a knot is skipped, so there G_k equals G bit for bit. The knot is darkened by
+// knots.darkening (Sec. 4.3). Mokume models only alive knots with straight axes (Sec. 7); so does this.
+#include <cmath>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "field/knot_field.hpp"
+
+namespace kerf {
+
+struct BlockKnot {
+  int id = 0;                    // the knot id of its marks (rings/annotations.hpp KnotMark::knot)
+  glm::vec3 origin{0.0f};        // block mm: where the knot axis starts (at the pith)
+  glm::vec3 direction{1, 0, 0};  // unit, from the pith outward
+  float speed = 0.16f;           // v_k: knot growth speed as a fraction of the stem's (knots.speed)
+
+  bool operator==(const BlockKnot&) const = default;
+};
+
+// Throws InputError naming `what` (e.g. "knots[1]") for a non-finite or zero direction, or a speed
+// outside (0, 1).
+void validate(const BlockKnot& knot, const std::string& what);
+
+// The distance from p to the knot's half-line, for any scalar type (Ceres Jets in the fit).
+template <typename T>
+T knotAxisDistance(const T* origin, const T* unitDirection, const glm::vec3& p) {
+  using std::sqrt;
+  const T rel[3] = {T(p.x) - origin[0], T(p.y) - origin[1], T(p.z) - origin[2]};
+  T along = rel[0] * unitDirection[0] + rel[1] * unitDirection[1] + rel[2] * unitDirection[2];
+  if (along < T(0)) along = T(0);
+  const T d[3] = {rel[0] - along * unitDirection[0], rel[1] - along * unitDirection[1],
+                  rel[2] - along * unitDirection[2]};
+  return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+// One knot's term of Eq. 6 at a point: its time T_k and its windowed smoothing (<= 0). The window is
+// 0 (and the knot is to be skipped) where d_k >= reach_end d_s.
+template <typename T>
+struct KnotTerm {
+  T time;
+  T smoothing;
+  T window;
+};
+template <typename T>
+KnotTerm<T> knotTerm(const T& stemTime, const T& knotDistance, const T& stemRadius, const T& speed,
+                     float ringWidth, const T& kStem, const KnotSettings& s) {
+  KnotTerm<T> out{T(0), T(0), T(0)};
+  if (!(stemRadius > T(1e-3f))) return out;
+  out.window = knotWindowOf(knotDistance / stemRadius, s.reachStart, s.reachEnd);
+  if (!(out.window > T(0))) return out;
+  out.time = knotDistance / (speed * T(ringWidth));
+  // One smoothness s for the whole union, as Mokume's Eq. 7 (knots.k_stem), not Larsson's adaptive k:
+  // where k switches from k_knot to k_stem at the knot's edge, G_k falls by up to 0.13 years moving
+  // outward (measured with the schema defaults), and rings would fold there.
+  const T m = out.time < stemTime ? out.time : stemTime;
+  out.smoothing = out.window * (powerSmoothMinOf(stemTime, out.time, kStem) - m);  // Eq. 2-3
+  return out;
+}
+
+struct BlockKnotSample {
+  float time = 0;      // G_k (years)
+  float darkness = 0;  // 0..1, the share of knots.darkening to subtract (Sec. 4.3)
+  int knotsInReach = 0;
+};
+
+// The knots of one block with the settings they are merged with. Immutable and thread-safe.
+class BlockKnots {
+ public:
+  BlockKnots() = default;
+  BlockKnots(std::vector<BlockKnot> knots, const KnotSettings& settings, float ringWidthMm);
+
+  bool empty() const { return knots_.empty(); }
+  const std::vector<BlockKnot>& knots() const { return knots_; }
+  const KnotSettings& settings() const { return settings_; }
+  float ringWidth() const { return ringWidth_; }
+
+  // G_k at p (block mm) from the stem time G(p) and the distance of p from the pith axis (mm).
+  BlockKnotSample merge(const glm::vec3& p, float stemTime, float stemRadius) const;
+
+ private:
+  std::vector<BlockKnot> knots_;
+  KnotSettings settings_;
+  float ringWidth_ = 1.0f;
+};
+
+}  // namespace kerf

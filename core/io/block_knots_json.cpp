@@ -1,0 +1,59 @@
+#include "io/block_knots_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "util/error.hpp"
+
+namespace kerf {
+
+using nlohmann::json;
+
+namespace {
+
+glm::vec3 readVec3(const json& value, const std::string& what) {
+  if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+      !value[2].is_number())
+    throw InputError(what + " must be [x, y, z] in mm, got " + value.dump());
+  return {value[0].get<float>(), value[1].get<float>(), value[2].get<float>()};
+}
+
+}  // namespace
+
+json blockKnotsToJson(const std::vector<BlockKnot>& knots) {
+  json out = json::array();
+  for (const BlockKnot& k : knots)
+    out.push_back({{"id", k.id},
+                   {"origin", {k.origin.x, k.origin.y, k.origin.z}},
+                   {"direction", {k.direction.x, k.direction.y, k.direction.z}},
+                   {"speed", k.speed}});
+  return out;
+}
+
+std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
+  if (!in.is_array()) throw InputError("knots must be a list of knots, got " + in.dump());
+  std::vector<BlockKnot> knots;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const std::string what = "knots[" + std::to_string(i) + "]";
+    const json& entry = in[i];
+    if (!entry.is_object()) throw InputError(what + " must be an object, got " + entry.dump());
+    for (const auto& [key, value] : entry.items()) {
+      if (key != "id" && key != "origin" && key != "direction" && key != "speed")
+        throw InputError(what + " has an unknown key \"" + key +
+                         "\" (written by a newer Kerf? known: id, origin, direction, speed)");
+    }
+    for (const char* key : {"id", "origin", "direction", "speed"})
+      if (!entry.contains(key)) throw InputError(what + " lacks \"" + key + "\"");
+    BlockKnot knot;
+    if (!entry["id"].is_number_integer()) throw InputError(what + ".id must be a whole number");
+    knot.id = entry["id"].get<int>();
+    knot.origin = readVec3(entry["origin"], what + ".origin");
+    knot.direction = readVec3(entry["direction"], what + ".direction");
+    if (!entry["speed"].is_number()) throw InputError(what + ".speed must be a number");
+    knot.speed = entry["speed"].get<float>();
+    validate(knot, what);
+    knots.push_back(knot);
+  }
+  return knots;
+}
+
+}  // namespace kerf

@@ -1,0 +1,204 @@
+#include "texture/texture_objective.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "render/renderers.hpp"
+#include "render/wood_model.hpp"
+#include "util/parallel.hpp"
+
+namespace kerf {
+namespace {
+
+double meanAbsoluteDifference(const Image& a, const Image& b) {
+  double sum = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(a.pixels[i] - b.pixels[i]);
+  return a.pixels.empty() ? 0.0 : sum / a.pixels.size();
+}
+
+double blurredMeanAbsoluteDifference(const Image& a, const Image& b, double sigmaPx) {
+  const cv::Mat ma(a.height, a.width, CV_32FC3, const_cast<float*>(a.pixels.data()));
+  const cv::Mat mb(b.height, b.width, CV_32FC3, const_cast<float*>(b.pixels.data()));
+  cv::Mat ba, bb, diff;
+  cv::GaussianBlur(ma, ba, cv::Size(), sigmaPx, sigmaPx, cv::BORDER_REFLECT101);
+  cv::GaussianBlur(mb, bb, cv::Size(), sigmaPx, sigmaPx, cv::BORDER_REFLECT101);
+  cv::absdiff(ba, bb, diff);
+  const cv::Scalar mean = cv::mean(diff);
+  return (mean[0] + mean[1] + mean[2]) / 3.0;
+}
+
+// Which part of its ring every pixel of a crop lies in: the ring phase (Liu Sec. 4.2: 0 at the start of
+// the earlywood, 1 at the ring boundary) of the fitted field at the pixel centre, in `bins` equal parts.
+// The detail does not move the rings, so the labels hold for every candidate and for the photo.
+std::vector<std::uint8_t> ringPhaseLabels(const WoodModel& model, const FaceCrop& crop, glm::ivec2 imageSize,
+                                          int bins) {
+  std::vector<std::uint8_t> labels(static_cast<std::size_t>(crop.width) * crop.height);
+  const float offset = model.params().ringOffset;
+  for (int y = 0; y < crop.height; ++y)
+    for (int x = 0; x < crop.width; ++x) {
+      const glm::vec3 p = model.block().pixelCenter(crop.face, crop.x + x, crop.y + y, imageSize);
+      const float t = model.material().year(p) - offset;
+      const float phase = t - std::floor(t);
+      labels[static_cast<std::size_t>(y) * crop.width + x] =
+          static_cast<std::uint8_t>(std::min(bins - 1, static_cast<int>(phase * bins)));
+    }
+  return labels;
+}
+
+// Pooled and per-ring-phase style distances of one face, half and half (only the pooled one without
+// phases): the phases tell ring-porous wood (pores at the start of the ring) from diffuse-porous wood.
+double faceStyle(const std::vector<TextureStatistics>& texture,
+                 const std::vector<TextureStatistics>& target) {
+  const double pooled = styleDistance(texture[0], target[0]).total;
+  double sum = 0;
+  int parts = 0;
+  for (std::size_t i = 1; i < target.size(); ++i)
+    if (!target[i].empty() && !texture[i].empty()) sum += styleDistance(texture[i], target[i]).total, ++parts;
+  return parts ? 0.5 * pooled + 0.5 * sum / parts : pooled;
+}
+
+}  // namespace
+
+TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates, const WoodParameters& params,
+                                   const std::array<Image, 6>& photos, const TextureLossOptions& options)
+    : block_(block), rates_(rates), startParams_(params), options_(options), photos_(photos) {
+  if (options.samples < 1 || options.samples > 8) throw InputError("samples per pixel side must be 1..8");
+  layout_ = placeFaceCrops(block, photos, options.cropsPerFace, options.cropSize, options.seed);
+  const WoodModel model(block, params, rates);
+  for (FaceId face : kAllFaces)
+    orientations_[faceIndex(face)] = faceOrientation(block, face, model.field().axis());
+  for (std::size_t k = 0; k < layout_.crops.size(); ++k) {
+    const FaceCrop& crop = layout_.crops[k];
+    photoCrops_.push_back(cropImage(photos[faceIndex(crop.face)], crop));
+    cropsOfFace_[faceIndex(crop.face)].push_back(k);
+    if (options.ringPhaseBins > 0)
+      cropLabels_.push_back(
+          ringPhaseLabels(model, crop, layout_.imageSize[faceIndex(crop.face)], options.ringPhaseBins));
+  }
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    if (cropsOfFace_[i].empty()) continue;
+    std::vector<Image> crops;
+    std::vector<std::vector<std::uint8_t>> labels;
+    for (std::size_t k : cropsOfFace_[i]) {
+      crops.push_back(photoCrops_[k]);
+      if (!cropLabels_.empty()) labels.push_back(cropLabels_[k]);
+    }
+    photoStatistics_[i] = computeLabelledTextureStatistics(crops, labels, options.ringPhaseBins,
+                                                           layout_.pxPerMm[i], options.statistics);
+  }
+}
+
+double TextureObjective::combine(const std::array<FaceTextureScore, 6>& faces) const {
+  double end = 0, side = 0;
+  int endCount = 0, sideCount = 0;
+  for (int i = 0; i < 6; ++i) {
+    if (!faces[i].used) continue;
+    const double face = faces[i].style + options_.l1Weight * faces[i].l1;
+    if (orientations_[i].grain == FaceGrain::EndGrain)
+      end += face, ++endCount;
+    else
+      side += face, ++sideCount;
+  }
+  const int groups = (endCount > 0) + (sideCount > 0);
+  return ((endCount ? end / endCount : 0.0) + (sideCount ? side / sideCount : 0.0)) / std::max(1, groups);
+}
+
+std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParameters>& candidates,
+                                                     const Progress& progress) const {
+  std::vector<std::unique_ptr<WoodModel>> models;
+  for (const WoodParameters& params : candidates)
+    models.push_back(std::make_unique<WoodModel>(block_, params, rates_));
+  const std::size_t crops = layout_.crops.size();
+  std::vector<Image> rendered(candidates.size() * crops);
+  // One work item per (candidate, crop): enough of them to keep every thread busy.
+  parallelRows(
+      static_cast<int>(rendered.size()),
+      [&](int item) {
+        const FaceCrop& crop = layout_.crops[item % crops];
+        rendered[item] = renderFaceCrop(*models[item / crops], crop, layout_.imageSize[faceIndex(crop.face)],
+                                        options_.samples);
+      },
+      progress.part(0.0, 0.8));
+  std::vector<TextureScore> scores(candidates.size());
+  parallelRows(
+      static_cast<int>(candidates.size() * 6),
+      [&](int item) {
+        const std::size_t c = item / 6;
+        const int face = item % 6;
+        if (cropsOfFace_[face].empty()) return;
+        std::vector<Image> faceCrops;
+        std::vector<std::vector<std::uint8_t>> labels;
+        double l1 = 0;
+        for (std::size_t k : cropsOfFace_[face]) {
+          faceCrops.push_back(rendered[c * crops + k]);
+          if (!cropLabels_.empty()) labels.push_back(cropLabels_[k]);
+          l1 += meanAbsoluteDifference(rendered[c * crops + k], photoCrops_[k]);
+        }
+        FaceTextureScore& score = scores[c].faces[face];
+        score.used = true;
+        score.l1 = l1 / cropsOfFace_[face].size();
+        score.style = faceStyle(computeLabelledTextureStatistics(faceCrops, labels, options_.ringPhaseBins,
+                                                                 layout_.pxPerMm[face], options_.statistics),
+                                photoStatistics_[face]);
+      },
+      progress.part(0.8, 1.0));
+  for (TextureScore& score : scores) score.loss = combine(score.faces);
+  return scores;
+}
+
+std::array<glm::vec3, 6> TextureObjective::meanColourRatios(const WoodParameters& params,
+                                                            const Progress& progress) const {
+  const WoodModel model(block_, params, rates_);
+  std::vector<Image> rendered(layout_.crops.size());
+  parallelRows(
+      static_cast<int>(rendered.size()),
+      [&](int k) {
+        const FaceCrop& crop = layout_.crops[k];
+        rendered[k] = renderFaceCrop(model, crop, layout_.imageSize[faceIndex(crop.face)], options_.samples);
+      },
+      progress);
+  std::array<glm::dvec3, 6> photoSum{}, renderSum{};
+  for (std::size_t k = 0; k < rendered.size(); ++k) {
+    const int face = faceIndex(layout_.crops[k].face);
+    const std::vector<float>&a = photoCrops_[k].pixels, &b = rendered[k].pixels;
+    for (std::size_t i = 0; i < a.size(); ++i) photoSum[face][i % 3] += a[i], renderSum[face][i % 3] += b[i];
+  }
+  std::array<glm::vec3, 6> ratios;
+  for (int f = 0; f < 6; ++f)
+    for (int c = 0; c < 3; ++c)
+      ratios[f][c] = renderSum[f][c] > 1e-9 ? static_cast<float>(photoSum[f][c] / renderSum[f][c]) : 1.0f;
+  return ratios;
+}
+
+TextureScore TextureObjective::evaluateFullFaces(const WoodParameters& params,
+                                                 const Progress& progress) const {
+  const WoodModel model(block_, params, rates_);
+  const WoodModel start(block_, startParams_, rates_);  // the ring phases, as for the crops
+  TextureScore score;
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    if (cropsOfFace_[i].empty()) continue;
+    const Image& photo = photos_[i];
+    const Image image = renderFace(model, face, layout_.imageSize[i], options_.samples,
+                                   progress.part(i / 6.0, (i + 1) / 6.0));
+    std::vector<std::vector<std::uint8_t>> labels;
+    if (options_.ringPhaseBins > 0)
+      labels.push_back(ringPhaseLabels(start, FaceCrop{face, 0, 0, image.width, image.height},
+                                       layout_.imageSize[i], options_.ringPhaseBins));
+    const auto statsOf = [&](const Image& im) {
+      return computeLabelledTextureStatistics(std::span<const Image>(&im, 1), labels, options_.ringPhaseBins,
+                                              layout_.pxPerMm[i], options_.statistics);
+    };
+    score.faces[i] = {true, faceStyle(statsOf(image), statsOf(photo)), meanAbsoluteDifference(image, photo),
+                      blurredMeanAbsoluteDifference(image, photo, layout_.pxPerMm[i])};
+  }
+  score.loss = combine(score.faces);
+  return score;
+}
+
+}  // namespace kerf

@@ -1,0 +1,91 @@
+#pragma once
+// The loss the texture inference minimises: for every photographed face, the style distance
+// (texture/texture_statistics.hpp) between crops of the rendered face and the same crops of its photo,
+// plus a weak L1 colour term (Mokume A.2.3 fits colours with L1). Each face is compared with its own
+// photo, because what a face shows depends on its orientation to the grain (learned-inference paper
+// Sec. 3.3): end grain shows pores as dots and rays as lines across the rings, side grain shows pores
+// as grooves and rays as flecks. End-grain and side-grain faces are averaged separately and then
+// together, so the two end faces weigh as much as the four side faces: each orientation constrains
+// different parameters (pore radius and spacing vs pore length, ray height and fibre length).
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+#include "field/growth_rates.hpp"
+#include "geometry/block.hpp"
+#include "io/image.hpp"
+#include "params/parameter_schema.hpp"
+#include "texture/face_crops.hpp"
+#include "texture/texture_statistics.hpp"
+#include "util/progress.hpp"
+
+namespace kerf {
+
+struct TextureLossOptions {
+  int cropsPerFace = 2;
+  int cropSize = 96;  // px, at the photos' own px/mm
+  int samples = 2;    // points per pixel side (pores are about a pixel wide in Mokume's 6.4 px/mm photos)
+  std::uint32_t seed = 1;  // where the crops lie
+  double l1Weight = 2.0;   // mean |render - photo| (0..1 colour units) is ~0.02-0.1, the style ~0.1-1
+  // Statistics also per part of the ring (ring phase in this many equal parts, from the fitted field), so
+  // the loss sees where in the ring pores and latewood sit; 0: pooled over the face only. Off by default:
+  // on CN03 three phases did not make the result look closer and made the loss noisier (docs/texture.md).
+  int ringPhaseBins = 0;
+  TextureStatisticsOptions statistics;
+};
+
+struct FaceTextureScore {
+  bool used = false;  // the face has a photo
+  double style = 0;   // StyleDistance::total
+  double l1 = 0;      // mean |render - photo| per channel value, 0..1
+  // The same after blurring both images by 1 mm (whole faces only, else 0): the colours and the ring
+  // pattern without the detail. Plain L1 grows when pores appear anywhere but exactly where the photo
+  // has its own, so it cannot judge detail; this one says whether the colours still match.
+  double l1Blurred = 0;
+};
+
+struct TextureScore {
+  double loss = 0;
+  std::array<FaceTextureScore, 6> faces;
+};
+
+class TextureObjective {
+ public:
+  // params: the starting parameters; only their pith axis is used (face orientations). Throws InputError
+  // (no photos, photos whose proportions differ from their faces).
+  TextureObjective(const Block& block, const GrowthRates& rates, const WoodParameters& params,
+                   const std::array<Image, 6>& photos, const TextureLossOptions& options = {});
+
+  // Scores of every candidate on the crops, in parallel (over candidates and crops). Cancellable.
+  std::vector<TextureScore> evaluate(const std::vector<WoodParameters>& candidates,
+                                     const Progress& progress = {}) const;
+  // The same loss on whole faces (for reports; slower).
+  TextureScore evaluateFullFaces(const WoodParameters& params, const Progress& progress = {}) const;
+
+  // Per face, the photo's mean colour over the crops divided by the rendering's (1 where a face has no
+  // photo): the face tint correction that matches the mean colours without touching the texture.
+  std::array<glm::vec3, 6> meanColourRatios(const WoodParameters& params,
+                                            const Progress& progress = {}) const;
+
+  const FaceCropLayout& layout() const { return layout_; }
+  const std::array<FaceOrientation, 6>& orientations() const { return orientations_; }
+
+ private:
+  double combine(const std::array<FaceTextureScore, 6>& faces) const;
+
+  Block block_;
+  GrowthRates rates_;
+  WoodParameters startParams_;  // its rings give the ring phases
+  TextureLossOptions options_;
+  std::array<Image, 6> photos_;
+  FaceCropLayout layout_;
+  std::array<FaceOrientation, 6> orientations_{};
+  std::vector<Image> photoCrops_;                                    // layout_.crops order
+  std::array<std::vector<TextureStatistics>, 6> photoStatistics_{};  // per face: pooled, per ring phase
+  std::vector<std::vector<std::uint8_t>> cropLabels_;                // ring phase of each crop pixel
+  std::array<std::vector<std::size_t>, 6> cropsOfFace_{};            // indices into layout_.crops
+};
+
+}  // namespace kerf

@@ -1,0 +1,213 @@
+// Fitting a knot into the block's growth field (fit/block_knot_fit.hpp, Mokume Sec. 5.2.4): a synthetic
+// block rendered with a known knot, its knot centres marked (a little off, as a user would), fitted.
+#include <gtest/gtest.h>
+
+#include "ring_image_fixture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "field/block_knots.hpp"
+#include "fit/block_knot_fit.hpp"
+#include "fit/growth_field_fit.hpp"
+#include "fit/iso_contours.hpp"
+#include "rings/annotations.hpp"
+
+using namespace kerf;
+
+namespace {
+
+double angleDeg(glm::vec3 a, glm::vec3 b) {
+  const double c = std::clamp(static_cast<double>(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0);
+  return std::acos(c) * 180.0 / std::numbers::pi;
+}
+
+// Where a knot's axis crosses the plane z = zPlane.
+glm::vec3 crossingAtZ(const BlockKnot& k, float zPlane) {
+  const glm::vec3 d = glm::normalize(k.direction);
+  return k.origin + ((zPlane - k.origin.z) / d.z) * d;
+}
+
+// The pith of the other fit tests (8, 0, -45), tilted 6 degrees; a knot leaving it through the block,
+// leaning up along the pith, entering face F (z = -20) and leaving through face A (z = +20).
+struct KnottySample {
+  Block block;
+  PithAxis pith = PithAxis::fromAngles({8, 0, -45}, 6, 30);
+  GrowthField stem{pith, 3.0f, GrowthRates::uniform(block, pith)};
+  KnotSettings settings = KnotSettings::fromParameters(WoodParameters{});
+  BlockKnot truth;
+  std::vector<KnotMark> marks;
+  GrowthFieldFitInput input;
+
+  KnottySample() {
+    const glm::vec3 target(3, -2, 0);
+    const glm::vec3 onPith = pith.origin + glm::dot(target - pith.origin, pith.direction) * pith.direction;
+    truth.id = 7;
+    truth.origin = onPith;
+    truth.direction = glm::normalize(target - onPith + 0.25f * glm::length(target - onPith) * pith.direction);
+    truth.speed = 0.12f;
+    const BlockKnots knots({truth}, settings, 3.0f);
+    const auto g = [&](glm::vec3 p) {
+      const Cylindrical c = pith.toCylindrical(p);
+      return knots.merge(p, stem.evaluate(c), c.radius).time;
+    };
+    for (FaceId f : kAllFaces)
+      input.rings[faceIndex(f)] = kerf::testing::renderRingImageOf(g, block, f, 192, 0.3f);
+    // The centres as a user marks them: half a millimetre off.
+    marks.push_back(
+        {7, FaceId::F, blockToFaceMm(block, FaceId::F, crossingAtZ(truth, -20)) + glm::vec2(0.5f, -0.4f)});
+    marks.push_back(
+        {7, FaceId::A, blockToFaceMm(block, FaceId::A, crossingAtZ(truth, 20)) + glm::vec2(-0.4f, 0.5f)});
+    input.knotMarks = marks;
+  }
+
+  IsoContours contours() const {
+    IsoContours c;
+    for (FaceId f : kAllFaces) {
+      const GrayImage8& image = input.rings[faceIndex(f)];
+      addFaceContours(c, block, f, {image.width, image.height}, extractIsoContours(image));
+    }
+    return c;
+  }
+};
+
+}  // namespace
+
+TEST(BlockKnotFit, InitialAxisRunsThroughTheMarksFromThePith) {
+  const KnottySample s;
+  const InitialKnot init = initialKnotFromMarks(s.marks, s.block, s.pith, 0.16f);
+  ASSERT_TRUE(init.knot) << init.note;
+  // Through both marks, pointing from the pith outward (towards face A).
+  const glm::vec3 f = faceMmToBlock(s.block, FaceId::F, s.marks[0].point);
+  const glm::vec3 a = faceMmToBlock(s.block, FaceId::A, s.marks[1].point);
+  EXPECT_LT(knotAxisDistance(&init.knot->origin.x, &init.knot->direction.x, f), 1e-3f);
+  EXPECT_LT(knotAxisDistance(&init.knot->origin.x, &init.knot->direction.x, a), 1e-3f);
+  EXPECT_GT(init.knot->direction.z, 0.5f);
+  EXPECT_LT(angleDeg(init.knot->direction, s.truth.direction), 3.0);
+
+  // One mark: perpendicular from the pith through it.
+  const InitialKnot one = initialKnotFromMarks({s.marks[1]}, s.block, s.pith, 0.16f);
+  ASSERT_TRUE(one.knot);
+  EXPECT_NEAR(glm::dot(one.knot->direction, s.pith.direction), 0.0f, 1e-5f);
+  EXPECT_LT(knotAxisDistance(&one.knot->origin.x, &one.knot->direction.x, a), 1e-3f);
+  EXPECT_EQ(one.note.rfind("one mark", 0), 0u);
+
+  // Two marks on one spot: skipped, with the reason.
+  const InitialKnot same = initialKnotFromMarks({s.marks[1], s.marks[1]}, s.block, s.pith, 0.16f);
+  EXPECT_FALSE(same.knot);
+  EXPECT_NE(same.note.find("apart"), std::string::npos);
+}
+
+TEST(BlockKnotFit, RecoversTheKnotAxisOnTheTrueStemFieldDeterministically) {
+  const KnottySample s;
+  const IsoContours contours = s.contours();
+  const BlockKnotFitResult fit = fitBlockKnots(contours, s.block, s.stem, s.marks, s.settings);
+  ASSERT_EQ(fit.knots.size(), 1u);
+  ASSERT_EQ(fit.entries.size(), 1u);
+  const BlockKnotFitEntry& e = fit.entries[0];
+  EXPECT_EQ(e.id, 7);
+  EXPECT_TRUE(e.optimized) << e.note;
+  const BlockKnot& k = fit.knots[0];
+  const double angle = angleDeg(k.direction, s.truth.direction);
+  const double offF = glm::length(crossingAtZ(k, -20) - crossingAtZ(s.truth, -20));
+  const double offA = glm::length(crossingAtZ(k, 20) - crossingAtZ(s.truth, 20));
+  std::printf(
+      "true stem: knot axis %.3f deg (initial %.3f deg), crossings off by %.3f / %.3f mm, speed %.4f "
+      "(true %.2f), k_stem %.3f; near-knot error %.4f without, %.4f initial, %.4f fitted over %d points, "
+      "%d iterations, %.3f s\n",
+      angle, angleDeg(e.initial.direction, s.truth.direction), offF, offA, k.speed, s.truth.speed, fit.kStem,
+      e.lossWithout, e.lossInitial, e.lossFitted, e.nearPoints, fit.iterations, fit.seconds);
+  EXPECT_LT(angle, 2.0);
+  EXPECT_LT(offF, 0.5);
+  EXPECT_LT(offA, 0.5);
+  EXPECT_NEAR(k.speed, s.truth.speed, 0.03);
+  EXPECT_LT(e.lossFitted, 0.5 * e.lossWithout);
+  EXPECT_LE(e.lossFitted, e.lossInitial);
+
+  const BlockKnotFitResult again = fitBlockKnots(contours, s.block, s.stem, s.marks, s.settings);
+  EXPECT_EQ(again.knots, fit.knots);
+  EXPECT_EQ(again.kStem, fit.kStem);
+}
+
+// The field a whole fit returns (stem + its knots) at every contour point.
+std::vector<double> fittedValues(const GrowthFieldFitResult& fit, const IsoContours& contours) {
+  const GrowthField stem(fit.params, *fit.rates);
+  const BlockKnots knots(fit.knots, KnotSettings::fromParameters(fit.params), fit.params.ringWidth);
+  std::vector<double> values;
+  for (const glm::vec3 p : contours.points) {
+    const Cylindrical c = stem.axis().toCylindrical(p);
+    values.push_back(knots.merge(p, stem.evaluate(c), c.radius).time);
+  }
+  return values;
+}
+
+TEST(BlockKnotFit, TheWholeFitRecoversTheKnotAndBeatsTheFitWithoutIt) {
+  const KnottySample s;
+  const GrowthFieldFitResult fit = fitGrowthFieldToSample(s.input, s.block, WoodParameters{});
+  GrowthFieldFitInput unmarked = s.input;
+  unmarked.knotMarks.clear();
+  const GrowthFieldFitResult plain = fitGrowthFieldToSample(unmarked, s.block, WoodParameters{});
+  ASSERT_TRUE(plain.knots.empty());
+  ASSERT_EQ(fit.knots.size(), 1u);
+  ASSERT_EQ(fit.report.knots.size(), 1u);
+  const BlockKnotFitEntry& e = fit.report.knots[0];
+  const BlockKnot& k = fit.knots[0];
+  const double angle = angleDeg(k.direction, s.truth.direction);
+  const double offF = glm::length(crossingAtZ(k, -20) - crossingAtZ(s.truth, -20));
+  const double offA = glm::length(crossingAtZ(k, 20) - crossingAtZ(s.truth, 20));
+  const PithAxis pith =
+      PithAxis::fromAngles(fit.params.pithOrigin, fit.params.pithTilt, fit.params.pithAzimuth);
+  const PithAxis plainPith =
+      PithAxis::fromAngles(plain.params.pithOrigin, plain.params.pithTilt, plain.params.pithAzimuth);
+
+  // Iso-contour error within 3 knot radii of the true knot: this fit against the fit without marks.
+  const IsoContours contours = s.contours();
+  std::vector<bool> near(contours.points.size());
+  for (std::size_t i = 0; i < near.size(); ++i)
+    near[i] = knotAxisDistance(&s.truth.origin.x, &s.truth.direction.x, contours.points[i]) <
+              3.0f * s.truth.speed * s.pith.toCylindrical(contours.points[i]).radius;
+  const double withKnot = nearKnotLoss(contours, fittedValues(fit, contours), near);
+  const double withoutKnot = nearKnotLoss(contours, fittedValues(plain, contours), near);
+  std::printf(
+      "whole fit: knot axis %.3f deg, crossings off by %.3f / %.3f mm, speed %.4f (true %.2f), k_stem %.3f "
+      "(true %.2f); pith %.3f deg off (without marks %.3f deg), ring width %.4f mm (without marks %.4f, "
+      "true 3); near-knot iso-contour error %.4f ring spacings (without marks %.4f); knot stage %.3f s\n",
+      angle, offF, offA, k.speed, s.truth.speed, fit.params.knotSmoothStem, s.settings.kStem,
+      angleDeg(pith.direction, s.pith.direction), angleDeg(plainPith.direction, s.pith.direction),
+      fit.params.ringWidth, plain.params.ringWidth, withKnot, withoutKnot, fit.report.knotSeconds);
+  EXPECT_TRUE(e.optimized);
+  EXPECT_LT(angle, 1.0);
+  EXPECT_LT(offF, 0.5);
+  EXPECT_LT(offA, 0.5);
+  EXPECT_NEAR(k.speed, s.truth.speed, 0.02);
+  EXPECT_LT(angleDeg(pith.direction, s.pith.direction), 1.0);
+  EXPECT_NEAR(fit.params.ringWidth, 3.0, 0.1);
+  EXPECT_LT(withKnot, 0.5 * withoutKnot);
+  EXPECT_LT(e.lossFitted, e.lossWithout);
+  EXPECT_EQ(fit.params.knotSmoothStem, fit.report.knotSmoothStem);
+  EXPECT_NO_THROW(validate(fit.params));
+  const auto lines = formatGrowthFieldFitReport(fit.report);
+  const auto has = [&](const std::string& start) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.rfind(start, 0) == 0; });
+  };
+  EXPECT_TRUE(has("knot 7 (marks on FA"));
+  EXPECT_TRUE(has("  iso-contour error near knot 7"));
+  EXPECT_TRUE(has("knots: the pith refined together with them"));
+}
+
+TEST(BlockKnotFit, ASingleMarkStillGivesAKnot) {
+  KnottySample s;
+  s.input.knotMarks = {s.marks[1]};  // the knot marked where it leaves through face A only
+  const GrowthFieldFitResult fit = fitGrowthFieldToSample(s.input, s.block, WoodParameters{});
+  ASSERT_EQ(fit.knots.size(), 1u);
+  const BlockKnotFitEntry& e = fit.report.knots[0];
+  EXPECT_EQ(e.note.rfind("one mark", 0), 0u) << e.note;
+  const double angle = angleDeg(fit.knots[0].direction, s.truth.direction);
+  std::printf("one mark: knot axis %.3f deg off (initial %.3f deg), near-knot error %.4f -> %.4f\n", angle,
+              angleDeg(e.initial.direction, s.truth.direction), e.lossWithout, e.lossFitted);
+  EXPECT_LT(e.lossFitted, e.lossWithout);
+}

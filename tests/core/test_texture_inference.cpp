@@ -1,0 +1,148 @@
+// Texture inference (texture/texture_inference.hpp, issue 7): a synthetic round trip - faces rendered from
+// known detail parameters (with another random seed than the inference uses, so only the statistics can
+// match), inference from perturbed parameters, recovery within the tolerances measured and stated in
+// docs/texture.md - plus determinism, cancellation and the errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stop_token>
+
+#include "demo/demo_block.hpp"
+
+#include "texture/detail_space.hpp"
+#include "texture/texture_inference.hpp"
+#include "texture_fixture.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+
+namespace {
+
+const test::TextureSynthetic& synthetic() {
+  return test::textureSynthetic();
+}
+
+WoodParameters perturbedStart(const WoodParameters& truth) {
+  WoodParameters start = truth;
+  start.seed = 3;
+  start.poreRadiusEarly *= 1.7f;
+  start.poreCellSize *= 0.6f;
+  start.raySpacing *= 1.8f;
+  start.fiberStrength += 0.3f;
+  return start;
+}
+
+// Small and fast: the default crops (two of 96 px per face), four parameters, no colour refit.
+TextureInferenceOptions fastOptions() {
+  TextureInferenceOptions options;
+  options.parameters = {"pores.radius_earlywood", "pores.cell_size", "rays.spacing", "fibers.strength"};
+  options.refitColours = false;
+  options.fullFaceReport = false;
+  return options;
+}
+
+double relativeError(float value, float truth) {
+  return std::abs(value - truth) / truth;
+}
+
+}  // namespace
+
+TEST(TextureInference, RecoversKnownDetailOfASyntheticBlock) {
+  const test::TextureSynthetic& s = synthetic();
+  const WoodParameters start = perturbedStart(s.truth.params);
+  int previews = 0;
+  TextureInferenceOptions options = fastOptions();
+  options.preview = [&](const WoodParameters&) { ++previews; };
+  const TextureInferenceResult r = inferTexture(s.truth.block, start, s.rates, s.photos, options);
+  for (const std::string& line : formatTextureInferenceReport(r)) std::printf("%s\n", line.c_str());
+  const WoodParameters& t = s.truth.params;
+  std::printf(
+      "pore radius %.4f (truth %.4f), pore spacing %.4f (%.4f), ray spacing %.4f (%.4f), fibre "
+      "strength %.3f (%.3f)\n",
+      r.params.poreRadiusEarly, t.poreRadiusEarly, r.params.poreCellSize, t.poreCellSize, r.params.raySpacing,
+      t.raySpacing, r.params.fiberStrength, t.fiberStrength);
+  EXPECT_LT(r.lossAfter, r.lossBefore);
+  EXPECT_GT(previews, 0);
+  EXPECT_LT(relativeError(r.params.poreRadiusEarly, t.poreRadiusEarly), 0.25);
+  EXPECT_LT(relativeError(r.params.poreCellSize, t.poreCellSize), 0.25);
+  EXPECT_LT(relativeError(r.params.raySpacing, t.raySpacing), 0.25);
+  EXPECT_LT(std::abs(r.params.fiberStrength - t.fiberStrength), 0.15);
+  for (FaceId face : kAllFaces) {
+    const FaceTextureReport& f = r.faces[faceIndex(face)];
+    EXPECT_TRUE(f.hasPhoto);
+    EXPECT_LT(f.after.style, f.before.style) << faceLetter(face);
+  }
+  // The demo's pith runs along y: B and D are end grain, the others side grain.
+  EXPECT_EQ(r.faces[faceIndex(FaceId::B)].orientation.grain, FaceGrain::EndGrain);
+  EXPECT_EQ(r.faces[faceIndex(FaceId::D)].orientation.grain, FaceGrain::EndGrain);
+  EXPECT_NE(r.faces[faceIndex(FaceId::A)].orientation.grain, FaceGrain::EndGrain);
+}
+
+TEST(TextureInference, IsDeterministic) {
+  const test::TextureSynthetic& s = synthetic();
+  TextureInferenceOptions options = fastOptions();
+  options.coarseSearch = false;
+  options.search.maxSweeps = 1;
+  options.loss.cropsPerFace = 1;
+  options.loss.cropSize = 64;
+  const WoodParameters start = perturbedStart(s.truth.params);
+  const TextureInferenceResult a = inferTexture(s.truth.block, start, s.rates, s.photos, options);
+  const TextureInferenceResult b = inferTexture(s.truth.block, start, s.rates, s.photos, options);
+  EXPECT_EQ(a.params, b.params);
+  EXPECT_EQ(a.lossAfter, b.lossAfter);
+}
+
+TEST(TextureInference, StopsWhenCancelled) {
+  const test::TextureSynthetic& s = synthetic();
+  std::stop_source stop;
+  stop.request_stop();
+  EXPECT_THROW(inferTexture(s.truth.block, s.truth.params, s.rates, s.photos, fastOptions(),
+                            Progress{nullptr, stop.get_token()}),
+               Cancelled);
+}
+
+TEST(TextureInference, RefusesMissingAndMisshapenPhotosAndUnknownParameters) {
+  const test::TextureSynthetic& s = synthetic();
+  EXPECT_THROW(inferTexture(s.truth.block, s.truth.params, s.rates, {}, fastOptions()), InputError);
+  std::array<Image, 6> wrong = s.photos;
+  wrong[2] = Image(512, 256, 3);  // a cube's face is square
+  EXPECT_THROW(inferTexture(s.truth.block, s.truth.params, s.rates, wrong, fastOptions()), InputError);
+  TextureInferenceOptions options = fastOptions();
+  options.parameters = {"growth.ring_width"};
+  EXPECT_THROW(inferTexture(s.truth.block, s.truth.params, s.rates, s.photos, options), InputError);
+}
+
+TEST(DetailSpace, EncodingRoundTrips) {
+  const WoodParameters params = demoProject(7).params;
+  const std::vector<DetailCoordinate> coordinates = allDetailCoordinates();
+  const WoodParameters back = decodeDetail(params, coordinates, encodeDetail(params, coordinates));
+  for (const DetailCoordinate& c : coordinates)
+    EXPECT_NEAR(detailValue(back, c), detailValue(params, c), 1e-3f * std::max(1.0f, detailValue(params, c)))
+        << c.id;
+}
+
+// The whole search (every detail parameter, coarse grid, colour refit) from a start far from the truth.
+// About 2-4 minutes on 2 cores, hence disabled; run it with --gtest_also_run_disabled_tests. It reports
+// how close each parameter comes (docs/texture.md lists a run) and asserts only the loss and the pores.
+TEST(TextureInference, DISABLED_FullRoundTripAllParameters) {
+  const test::TextureSynthetic& s = synthetic();
+  WoodParameters start = perturbedStart(s.truth.params);
+  start.rayHeight *= 2.0f;
+  start.poreLength *= 0.5f;
+  start.fiberWidth *= 2.0f;
+  start.poreDarkness *= 0.6f;
+  TextureInferenceOptions options;
+  options.loss.cropsPerFace = 4;
+  options.loss.cropSize = 128;
+  const TextureInferenceResult r = inferTexture(s.truth.block, start, s.rates, s.photos, options);
+  for (const std::string& line : formatTextureInferenceReport(r)) std::printf("%s\n", line.c_str());
+  for (const DetailCoordinate& c : allDetailCoordinates()) {
+    const float truth = detailValue(s.truth.params, c), from = detailValue(start, c),
+                found = detailValue(r.params, c);
+    std::printf("  %-26s truth %8.4f  start %8.4f  found %8.4f  (%+.0f %%)\n", c.id.c_str(), truth, from,
+                found, 100.0 * (found - truth) / std::max(1e-6f, std::abs(truth)));
+  }
+  EXPECT_LT(r.lossAfter, r.lossBefore);
+  EXPECT_LT(relativeError(r.params.poreRadiusEarly, s.truth.params.poreRadiusEarly), 0.25);
+}
