@@ -26,4 +26,16 @@ QImage toQImage(const Image& image) {
   return out;
 }
 
+Image fromQImage(const QImage& photo) {
+  if (photo.isNull()) return {};
+  const QImage rgb = photo.convertToFormat(QImage::Format_RGB888);
+  Image image(rgb.width(), rgb.height(), 3);
+  for (int y = 0; y < rgb.height(); ++y) {
+    const uchar* line = rgb.constScanLine(y);
+    float* out = image.pixel(0, y);
+    for (int i = 0; i < 3 * rgb.width(); ++i) out[i] = line[i] / 255.0f;
+  }
+  return image;
+}
+
 }  // namespace kerf

@@ -10,4 +10,7 @@ namespace kerf {
 // and rounded. Safe on any thread. An empty image gives a null QImage.
 QImage toQImage(const Image& image);
 
+// QImage (any format) -> float 0..1 RGB, the inverse for photos. A null QImage gives an empty image.
+Image fromQImage(const QImage& photo);
+
 }  // namespace kerf

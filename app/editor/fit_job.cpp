@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fit/growth_field_fit.hpp"
+#include "qt_image.hpp"
 #include "rings/contours.hpp"
 #include "rings/ring_detector.hpp"
 #include "util/error.hpp"
@@ -12,21 +13,6 @@
 namespace kerf {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-Image fromQImage(const QImage& photo) {
-  const QImage rgb = photo.convertToFormat(QImage::Format_RGB888);
-  Image image(rgb.width(), rgb.height(), 3);
-  for (int y = 0; y < rgb.height(); ++y) {
-    const uchar* line = rgb.constScanLine(y);
-    float* out = image.pixel(0, y);
-    for (int i = 0; i < 3 * rgb.width(); ++i) out[i] = line[i] / 255.0f;
-  }
-  return image;
-}
-
-}  // namespace
 
 int RingDetection::contourCount() const {
   int n = 0;

@@ -1,22 +1,9 @@
 #include "texture_job.hpp"
 
 #include "io/image.hpp"
+#include "qt_image.hpp"
 
 namespace kerf {
-namespace {
-
-Image fromQImage(const QImage& photo) {
-  const QImage rgb = photo.convertToFormat(QImage::Format_RGB888);
-  Image image(rgb.width(), rgb.height(), 3);
-  for (int y = 0; y < rgb.height(); ++y) {
-    const uchar* line = rgb.constScanLine(y);
-    float* out = image.pixel(0, y);
-    for (int i = 0; i < 3 * rgb.width(); ++i) out[i] = line[i] / 255.0f;
-  }
-  return image;
-}
-
-}  // namespace
 
 TextureJobResult inferTextureFromPhotos(const Block& block, const WoodParameters& current,
                                         const GrowthRates& rates, const std::array<QImage, 6>& photos,
