@@ -411,6 +411,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     return;
   }
   autosave_->discardCurrent();  // closed on purpose: nothing to recover
+  jobs_->cancelAll();           // fits, renders and exports stop now; an export leaves no file
   event->accept();
 }
 
