@@ -26,7 +26,9 @@ std::string sizeText(int width, int height, float pxPerMm) {
 }
 
 ExportSummary runPartExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {
-  const PartExportResult result = exportPart(model, request.part, request.out, progress);
+  PartExportOptions options = request.part;
+  options.samples = request.samples;  // --samples, as for images
+  const PartExportResult result = exportPart(model, options, request.out, progress);
   ExportSummary summary;
   summary.kind = ExportKind::Part;
   summary.samples = result.samples;

@@ -32,7 +32,7 @@ struct ExportRequest {
   int resolution = 128;
   // Depth stacks (face, step, depth; pxPerMm, samples and image.pngLayer come from the fields above).
   std::optional<DepthStackOptions> depthStack;
-  // Parts (.obj, .glb): the mesh, its placement and the texture resolution.
+  // Parts (.obj, .glb): the mesh, its placement and the texture resolution (supersampling: `samples`).
   PartExportOptions part;
 };
 

@@ -36,7 +36,7 @@ PartExportResult exportPart(const WoodModel& model, const PartExportOptions& opt
   atlasOptions.resolution = options.textureResolution;
   const UvAtlas atlas = buildUvAtlas(placed, atlasOptions);
   progress.set(0.05);
-  const BakedTexture baked = bakePartTexture(model, atlas, progress.part(0.05, 0.9));
+  const BakedTexture baked = bakePartTexture(model, atlas, options.samples, progress.part(0.05, 0.9));
   if (format == ".obj") {
     result.files = writePartObj(out, atlas.mesh, baked.image);
   } else {

@@ -18,6 +18,7 @@ struct PartExportOptions {
   std::filesystem::path mesh;  // .obj, .stl or .ply
   PartPlacement placement;
   int textureResolution = 1024;
+  int samples = 2;  // per texel side (bake_part_texture.hpp)
   // A part that sticks out of the block is written anyway (the model continues the wood beyond the
   // block, which is fine for a preview) with a warning, unless this is set: then it is an InputError.
   bool requireFit = false;

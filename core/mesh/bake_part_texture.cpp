@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "render/wood_model.hpp"
+#include "util/error.hpp"
 #include "util/parallel.hpp"
 
 namespace kerf {
@@ -112,7 +113,9 @@ void dilate(Image& image, std::vector<char>& filled, int rounds) {
 
 }  // namespace
 
-BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, const Progress& progress) {
+BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, int samples,
+                             const Progress& progress) {
+  if (samples < 1 || samples > 8) throw InputError("samples per texel side must be 1 to 8");
   const int side = atlas.resolution;
   BakedTexture baked;
   baked.owner.assign(std::size_t(side) * side, -1);
@@ -128,11 +131,19 @@ BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, const
         for (int x = 0; x < side; ++x) {
           const int t = baked.owner[std::size_t(y) * side + x];
           if (t < 0) continue;
-          const glm::vec3 w = barycentric(texelTriangle(atlas, t), glm::vec2(x + 0.5f, y + 0.5f));
-          const glm::uvec3 tri = atlas.mesh.triangles[t];
-          const glm::vec3 p = w.x * atlas.mesh.positions[tri.x] + w.y * atlas.mesh.positions[tri.y] +
-                              w.z * atlas.mesh.positions[tri.z];
-          const glm::vec3 c = model.evaluate(p).color;
+          const TexelTriangle tri = texelTriangle(atlas, t);
+          const glm::uvec3 corners = atlas.mesh.triangles[t];
+          glm::vec3 c(0.0f);
+          for (int sy = 0; sy < samples; ++sy)
+            for (int sx = 0; sx < samples; ++sx) {
+              const glm::vec3 w =
+                  barycentric(tri, glm::vec2(x + (sx + 0.5f) / samples, y + (sy + 0.5f) / samples));
+              const glm::vec3 p = w.x * atlas.mesh.positions[corners.x] +
+                                  w.y * atlas.mesh.positions[corners.y] +
+                                  w.z * atlas.mesh.positions[corners.z];
+              c += model.evaluate(p).color;
+            }
+          c /= float(samples * samples);
           float* out = baked.image.pixel(x, y);
           out[0] = c.x, out[1] = c.y, out[2] = c.z;
         }
@@ -142,7 +153,7 @@ BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, const
   std::vector<char> filled(baked.owner.size());
   for (std::size_t i = 0; i < filled.size(); ++i) {
     filled[i] = baked.owner[i] >= 0;
-    baked.samples += filled[i] ? 1 : 0;
+    baked.samples += filled[i] ? std::size_t(samples * samples) : 0;
   }
   dilate(baked.image, filled, atlas.padding + 1);
   progress.set(1.0);

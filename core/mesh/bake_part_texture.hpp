@@ -1,7 +1,8 @@
 #pragma once
 // Baking the block's wood onto a part's atlas (issue 7): each texel covered by a triangle gets the wood
-// colour of the model at that texel's 3D point (one sample at the texel centre, the point found through
-// the triangle's barycentric coordinates, in block mm). Texels whose square touches a triangle but whose
+// colour of the model at that texel's 3D point, found through the triangle's barycentric coordinates in
+// block mm: the mean of samples x samples points spread evenly over the texel (1: its centre), as the
+// image exports supersample their pixels. Texels whose square touches a triangle but whose
 // centre lies just outside it (the chart's rim) are evaluated on the triangle's plane continued, so
 // bilinear filtering at the rim blends real wood. The remaining gutter is filled outwards from the
 // charts (each empty texel takes the mean of its filled neighbours, padding + 1 rounds), and what stays
@@ -23,6 +24,8 @@ struct BakedTexture {
 };
 
 // Multithreaded over rows (util/parallel.hpp); throws Cancelled.
-BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, const Progress& progress = {});
+// samples: per texel side, 1..8. Throws InputError for other counts.
+BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, int samples = 1,
+                             const Progress& progress = {});
 
 }  // namespace kerf

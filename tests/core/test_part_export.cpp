@@ -214,6 +214,42 @@ TEST(PartBake, TextureAtEachVertexAndInsideTrianglesIsTheWoodThere) {
   }
 }
 
+TEST(PartBake, SupersamplingAveragesPointsSpreadOverTheTexel) {
+  const fs::path dir = folder("supersampling");
+  UvAtlasOptions options;
+  options.resolution = 64;
+  const UvAtlas atlas = buildUvAtlas(placedBox(dir), options);
+  const BakedTexture one = bakePartTexture(demoModel(), atlas, 1);
+  const BakedTexture three = bakePartTexture(demoModel(), atlas, 3);
+  EXPECT_EQ(three.samples, 9 * one.samples);
+  EXPECT_EQ(three.owner, one.owner);
+  std::size_t checked = 0;
+  for (int y = 0; y < 64; y += 3)
+    for (int x = 0; x < 64; x += 3) {
+      const int t = three.owner[std::size_t(y) * 64 + x];
+      if (t < 0) continue;
+      const glm::uvec3 tri = atlas.mesh.triangles[t];
+      const glm::vec2 a = atlas.mesh.uvs[tri.x] * 64.0f, b = atlas.mesh.uvs[tri.y] * 64.0f,
+                      c = atlas.mesh.uvs[tri.z] * 64.0f;
+      glm::vec3 mean(0.0f);
+      for (int sy = 0; sy < 3; ++sy)
+        for (int sx = 0; sx < 3; ++sx) {
+          const glm::vec2 q(x + (sx + 0.5f) / 3, y + (sy + 0.5f) / 3);
+          const float area = triangleArea2(a, b, c);
+          const glm::vec3 w(triangleArea2(b, c, q) / area, triangleArea2(c, a, q) / area,
+                            triangleArea2(a, b, q) / area);
+          mean += demoModel()
+                      .evaluate(w.x * atlas.mesh.positions[tri.x] + w.y * atlas.mesh.positions[tri.y] +
+                                w.z * atlas.mesh.positions[tri.z])
+                      .color;
+        }
+      const float* texel = three.image.pixel(x, y);
+      EXPECT_LT(maxDifference(glm::vec3(texel[0], texel[1], texel[2]), mean / 9.0f), 1e-4f);
+      ++checked;
+    }
+  EXPECT_GT(checked, 100u);
+}
+
 TEST(PartBake, GutterIsFilledSoMipmapsDoNotBleedBlack) {
   const fs::path dir = folder("gutter");
   UvAtlasOptions options;
@@ -244,7 +280,7 @@ TEST(PartBake, CancelStopsTheBake) {
   const UvAtlas atlas = buildUvAtlas(placedBox(dir));
   std::stop_source stop;
   stop.request_stop();
-  EXPECT_THROW(bakePartTexture(demoModel(), atlas, Progress{nullptr, stop.get_token()}), Cancelled);
+  EXPECT_THROW(bakePartTexture(demoModel(), atlas, 1, Progress{nullptr, stop.get_token()}), Cancelled);
 }
 
 TEST(PartExport, ObjMtlPngReadBackWithAssimpAndOpenImageIO) {
@@ -253,6 +289,7 @@ TEST(PartExport, ObjMtlPngReadBackWithAssimpAndOpenImageIO) {
   options.mesh = kerf::testing::writePrismPly(dir / "prism.ply", 9, 24, 24);
   options.placement.rotationDeg = {30, 0, 0};
   options.textureResolution = 256;
+  options.samples = 2;
   const PartExportResult result = exportPart(demoModel(), options, dir / "part.obj");
   ASSERT_EQ(result.files.size(), 3u);
   EXPECT_EQ(result.files[1], dir / "part.mtl");
@@ -264,7 +301,7 @@ TEST(PartExport, ObjMtlPngReadBackWithAssimpAndOpenImageIO) {
   UvAtlasOptions atlasOptions;
   atlasOptions.resolution = 256;
   const UvAtlas atlas = buildUvAtlas(placed, atlasOptions);
-  const BakedTexture baked = bakePartTexture(demoModel(), atlas);
+  const BakedTexture baked = bakePartTexture(demoModel(), atlas, 2);
   EXPECT_EQ(result.samples, baked.samples);
 
   Assimp::Importer importer;
@@ -310,7 +347,7 @@ TEST(PartExport, GlbReadBackWithTinyGltf) {
     o.resolution = 128;
     return buildUvAtlas(placedBox(dir), o);
   }();
-  const BakedTexture baked = bakePartTexture(demoModel(), atlas);
+  const BakedTexture baked = bakePartTexture(demoModel(), atlas, options.samples);
 
   std::ifstream file(dir / "part.glb", std::ios::binary);
   char magic[4];
