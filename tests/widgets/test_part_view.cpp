@@ -16,27 +16,41 @@ QString artifact(const QString& name) {
   return QStringLiteral(KERF_TEST_ARTIFACTS) + "/part_view_" + name + ".png";
 }
 
-// An open 48-sided tube along y (radius 9 mm, 26 mm long), turned 30° about x.
-std::shared_ptr<const Mesh> placedCylinder() {
+// A turned part (a small candlestick, 34 mm tall, solid of revolution about y with flat ends), tilted
+// 20° about x so the rings cross it at an angle.
+std::shared_ptr<const Mesh> placedTurnedPart() {
   Mesh m;
-  m.name = "cylinder";
-  const int sides = 48;
-  for (int i = 0; i < sides; ++i) {
-    const float a = 2.0f * float(M_PI) * i / sides;
-    const glm::vec3 n(std::cos(a), 0, -std::sin(a));
-    m.positions.push_back(9.0f * n + glm::vec3(0, -13, 0));
-    m.positions.push_back(9.0f * n + glm::vec3(0, 13, 0));
-    m.normals.push_back(n);
-    m.normals.push_back(n);
+  m.name = "candlestick";
+  const int sides = 64, rows = 48;
+  const auto radius = [](float t) {  // t from the foot (0) to the top (1), mm
+    return 6.5f + 4.0f * std::exp(-std::pow((t - 0.04f) / 0.08f, 2.0f)) -
+           3.0f * std::pow(std::sin(float(M_PI) * t), 2.0f) +
+           2.5f * std::exp(-std::pow((t - 0.62f) / 0.05f, 2.0f)) + 3.0f * std::pow(t, 4.0f);
+  };
+  for (int r = 0; r < rows; ++r) {
+    const float t = float(r) / (rows - 1);
+    for (int i = 0; i < sides; ++i) {
+      const float a = 2.0f * float(M_PI) * i / sides;
+      m.positions.push_back({radius(t) * std::cos(a), -17.0f + 34.0f * t, -radius(t) * std::sin(a)});
+    }
   }
+  for (unsigned r = 0; r + 1 < unsigned(rows); ++r)
+    for (unsigned i = 0; i < unsigned(sides); ++i) {
+      const unsigned a = r * sides + i, b = r * sides + (i + 1) % sides;
+      m.triangles.push_back({a, b, b + sides});
+      m.triangles.push_back({a, b + sides, a + sides});
+    }
+  const unsigned bottom = unsigned(m.positions.size()), top = bottom + 1;
+  m.positions.push_back({0, -17, 0});
+  m.positions.push_back({0, 17, 0});
   for (unsigned i = 0; i < unsigned(sides); ++i) {
-    const unsigned j = (i + 1) % sides;
-    m.triangles.push_back({2 * i, 2 * j, 2 * j + 1});
-    m.triangles.push_back({2 * i, 2 * j + 1, 2 * i + 1});
+    m.triangles.push_back({bottom, (i + 1) % sides, i});
+    const unsigned last = (rows - 1) * sides;
+    m.triangles.push_back({top, last + i, last + (i + 1) % sides});
   }
   PartPlacement p;
-  p.rotationDeg = {30, 0, 0};
-  return std::make_shared<const Mesh>(placeMesh(m, p));
+  p.rotationDeg = {20, 0, 0};
+  return std::make_shared<const Mesh>(placeMesh(m, p));  // no normals: drawn flat per triangle
 }
 
 double changedShare(const QImage& a, const QImage& b) {
@@ -71,12 +85,12 @@ class PartViewTest : public QObject {
     view.refineNow();
     const QImage block = view.grabFramebuffer();
 
-    const auto part = placedCylinder();
+    const auto part = placedTurnedPart();
     view.setPart(part);
     QVERIFY(view.showsPart());
     view.refineNow();
     const QImage withPart = view.grabFramebuffer();
-    QVERIFY(withPart.save(artifact("cylinder")));
+    QVERIFY(withPart.save(artifact("turned")));
     const double share = changedShare(block, withPart);
     qInfo() << "share of pixels changed by showing the part:" << share;
     QVERIFY(share > 0.1);
