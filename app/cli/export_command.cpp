@@ -35,7 +35,8 @@ Command addExportCommand(CLI::App& app) {
   command
       ->add_option("--px-per-mm", o->pxPerMm, "Image resolution; stored in the file as DPI and mm per pixel")
       ->check(CLI::Range(0.01f, 400.0f));
-  command->add_option("--samples", o->samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
+  command->add_option("--samples", o->samples, "Supersamples per pixel side (parts: per texel side)")
+      ->check(CLI::Range(1, 8));
   command->add_option("--layer", o->layer, "What a PNG holds: colour, growth (16-bit) or rings")
       ->check(CLI::IsMember({"colour", "color", "growth", "rings"}));
   command->add_flag("--no-layers", o->noLayers, "TIFF/EXR: colour only, without the growth and rings layers");

@@ -399,6 +399,18 @@ TEST(PartExport, GlbReadBackWithTinyGltf) {
             std::max(worst, std::abs(image.image[(std::size_t(y) * 128 + x) * image.component + c] / 255.0f -
                                      baked.image.pixel(x, y)[c]));
   EXPECT_LT(worst, 0.6f / 255.0f);
+
+  // A second reader: assimp's glTF 2 importer takes the file, with the node's mm-to-m scale.
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile((dir / "part.glb").string(), 0);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  ASSERT_EQ(scene->mNumMeshes, 1u);
+  EXPECT_EQ(scene->mMeshes[0]->mNumFaces, atlas.mesh.triangles.size());
+  EXPECT_EQ(scene->mMeshes[0]->mNumVertices, atlas.mesh.positions.size());
+  // The single node becomes assimp's root, holding the mesh and the scale.
+  EXPECT_EQ(scene->mRootNode->mNumMeshes, 1u);
+  EXPECT_NEAR(scene->mRootNode->mTransformation.a1, 0.001f, 1e-7f);
+  EXPECT_NEAR(scene->mRootNode->mTransformation.c3, 0.001f, 1e-7f);
 }
 
 TEST(PartExport, DoesNotFitWarnsOrFailsAndErrorsNameTheFile) {
