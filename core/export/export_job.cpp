@@ -64,11 +64,7 @@ ExportKind exportKindOf(const ExportRequest& request) {
     return ExportKind::Image;
   }
   if (isVolumeExtension(e)) return ExportKind::Volume;
-  if (isPartExtension(e)) {
-    if (request.part.mesh.empty())
-      throw InputError("a part export (" + e + ") needs a mesh: --mesh FILE (.obj, .stl or .ply)");
-    return ExportKind::Part;
-  }
+  if (isPartExtension(e)) return ExportKind::Part;
   throw InputError("cannot tell what to export from \"" + request.out.string() +
                    "\": use .png, .tif, .tiff or .exr for an image, .nrrd or .vdb for a volume, "
                    ".obj or .glb for a textured part (with --mesh), or a folder with --depth-stack");

@@ -15,7 +15,8 @@ PartExportResult exportPart(const WoodModel& model, const PartExportOptions& opt
   const std::string format = lowerExtension(out);
   if (format != ".obj" && format != ".glb")
     throw InputError("a textured part is written as .obj or .glb, not \"" + format + "\"");
-  if (options.mesh.empty()) throw InputError("a part export needs a mesh (--mesh FILE: .obj, .stl or .ply)");
+  if (options.mesh.empty())
+    throw InputError("a part export (" + format + ") needs a mesh: --mesh FILE (.obj, .stl or .ply)");
   if (options.textureResolution < 16 || options.textureResolution > 16384)
     throw InputError("the texture resolution must be between 16 and 16384 texels, not " +
                      std::to_string(options.textureResolution));
