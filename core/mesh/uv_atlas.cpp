@@ -64,6 +64,57 @@ struct ChartShape {
   glm::vec2 min{0.0f}, max{0.0f};  // projected extent, mm
 };
 
+ChartShape chartOf(const Mesh& mesh, std::vector<int> triangles, int axis) {
+  ChartShape c;
+  c.triangles = std::move(triangles);
+  c.axis = axis;
+  c.min = glm::vec2(INFINITY);
+  c.max = glm::vec2(-INFINITY);
+  for (int t : c.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec2 q = project(mesh.positions[mesh.triangles[t][k]], axis);
+      c.min = glm::min(c.min, q);
+      c.max = glm::max(c.max, q);
+    }
+  return c;
+}
+
+// Whether two triangles of the chart cover the same point of its projection (a surface that winds round
+// its axis, like a helical ramp): the projection is sampled on a grid of up to 512 cells a side, finer
+// for charts of more triangles, and a cell centre strictly inside two triangles is an overlap.
+bool projectionOverlaps(const Mesh& mesh, const ChartShape& c) {
+  if (c.triangles.size() < 2) return false;
+  const glm::vec2 extent = c.max - c.min;
+  const float cells = std::clamp(8.0f * std::sqrt(float(c.triangles.size())), 16.0f, 512.0f);
+  const float cell = std::max(extent.x, extent.y) / cells;
+  if (!(cell > 0.0f)) return false;
+  const int w = int(extent.x / cell) + 1, h = int(extent.y / cell) + 1;
+  std::vector<int> owner(std::size_t(w) * h, -1);
+  for (int t : c.triangles) {
+    glm::vec2 q[3];
+    for (int k = 0; k < 3; ++k) q[k] = (project(mesh.positions[mesh.triangles[t][k]], c.axis) - c.min) / cell;
+    const float area = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
+    if (std::abs(area) < 1e-12f) continue;
+    const glm::vec2 lo = glm::min(q[0], glm::min(q[1], q[2])), hi = glm::max(q[0], glm::max(q[1], q[2]));
+    for (int y = std::max(0, int(lo.y)); y <= std::min(h - 1, int(hi.y)); ++y)
+      for (int x = std::max(0, int(lo.x)); x <= std::min(w - 1, int(hi.x)); ++x) {
+        const glm::vec2 p(x + 0.5f, y + 0.5f);
+        bool inside = true;
+        for (int k = 0; k < 3 && inside; ++k) {
+          const glm::vec2 a = q[k], b = q[(k + 1) % 3];
+          // Strictly inside (by a margin), so neighbours sharing an edge never both claim a cell.
+          inside =
+              ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / area > 1e-4f * glm::length(b - a);
+        }
+        if (!inside) continue;
+        int& o = owner[std::size_t(y) * w + x];
+        if (o >= 0 && o != t) return true;
+        o = t;
+      }
+  }
+  return false;
+}
+
 // Texel size of a chart's rectangle (with the gutter) at `texelsPerMm`.
 glm::ivec2 rectSize(const ChartShape& c, float texelsPerMm, int padding) {
   const glm::vec2 e = (c.max - c.min) * texelsPerMm;
@@ -122,26 +173,26 @@ UvAtlas buildUvAtlas(const Mesh& mesh, const UvAtlasOptions& options) {
       if (!inserted) sets.join(int(t), it->second);
     }
   }
-  std::vector<ChartShape> charts;
-  std::unordered_map<int, int> chartOfRoot;
-  std::vector<int> chartOfTriangle(triangleCount);
+  // Connected pieces; a piece whose projection folds onto itself becomes one chart per triangle.
+  std::vector<std::vector<int>> pieces;
+  std::unordered_map<int, int> pieceOfRoot;
   for (std::size_t t = 0; t < triangleCount; ++t) {
-    const auto [it, inserted] = chartOfRoot.emplace(sets.find(int(t)), int(charts.size()));
-    if (inserted) {
-      charts.emplace_back();
-      charts.back().axis = axisOf[t];
-      charts.back().min = glm::vec2(INFINITY);
-      charts.back().max = glm::vec2(-INFINITY);
-    }
-    chartOfTriangle[t] = it->second;
-    ChartShape& c = charts[it->second];
-    c.triangles.push_back(int(t));
-    for (int k = 0; k < 3; ++k) {
-      const glm::vec2 q = project(mesh.positions[mesh.triangles[t][k]], c.axis);
-      c.min = glm::min(c.min, q);
-      c.max = glm::max(c.max, q);
-    }
+    const auto [it, inserted] = pieceOfRoot.emplace(sets.find(int(t)), int(pieces.size()));
+    if (inserted) pieces.emplace_back();
+    pieces[it->second].push_back(int(t));
   }
+  std::vector<ChartShape> charts;
+  for (const std::vector<int>& piece : pieces) {
+    ChartShape whole = chartOf(mesh, piece, axisOf[piece.front()]);
+    if (!projectionOverlaps(mesh, whole)) {
+      charts.push_back(std::move(whole));
+      continue;
+    }
+    for (int t : piece) charts.push_back(chartOf(mesh, {t}, whole.axis));
+  }
+  std::vector<int> chartOfTriangle(triangleCount);
+  for (std::size_t c = 0; c < charts.size(); ++c)
+    for (int t : charts[c].triangles) chartOfTriangle[t] = int(c);
 
   // The largest texels per mm whose shelf packing fits, by bisection.
   std::vector<int> order(charts.size());

@@ -6,9 +6,10 @@
 // pieces connected by shared edges (vertices are matched by position, so files that repeat vertices per
 // face, like STL, chart the same). Each chart is projected orthographically along its axis, in block mm,
 // so every chart has the same texels per mm and the texture's sharpness is even over the part. A
-// projection along the dominant axis never turns a triangle over, so triangles of one chart do not fold
-// onto each other; a chart that winds over itself (a helix seen along its axis) could still overlap,
-// which parts cut from a block practically never do.
+// projection along the dominant axis never turns a triangle over, but a piece that winds round its axis
+// (a helical ramp seen along it) can still cover a point twice; such a piece is found by sampling its
+// projection on a grid and is split into one chart per triangle (rare for parts cut from a block; it
+// costs texture space, not correctness).
 //
 // Packing: charts are sorted by height and laid on shelves, each with `padding` texels of gutter on
 // every side; the largest texels per mm that fits is found by bisection. The bake fills the gutter

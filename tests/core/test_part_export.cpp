@@ -68,6 +68,49 @@ glm::vec3 sample(const Image& image, glm::vec2 uv) {
   return c;
 }
 
+// Texel centres of the atlas that lie strictly inside two triangles (0 for a one-to-one atlas).
+int overlappingTexels(const UvAtlas& atlas) {
+  const int side = atlas.resolution;
+  std::vector<int> owner(std::size_t(side) * side, -1);
+  int overlaps = 0;
+  for (std::size_t t = 0; t < atlas.mesh.triangles.size(); ++t) {
+    const glm::uvec3 tri = atlas.mesh.triangles[t];
+    const glm::vec2 a = atlas.mesh.uvs[tri.x] * float(side), b = atlas.mesh.uvs[tri.y] * float(side),
+                    c = atlas.mesh.uvs[tri.z] * float(side);
+    const float area = triangleArea2(a, b, c);
+    if (std::abs(area) < 1e-9f) continue;
+    const glm::vec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
+    for (int y = std::max(0, int(lo.y)); y <= std::min(side - 1, int(hi.y)); ++y)
+      for (int x = std::max(0, int(lo.x)); x <= std::min(side - 1, int(hi.x)); ++x) {
+        const glm::vec2 q(x + 0.5f, y + 0.5f);
+        const glm::vec3 w(triangleArea2(b, c, q) / area, triangleArea2(c, a, q) / area,
+                          triangleArea2(a, b, q) / area);
+        if (w.x <= 1e-4f || w.y <= 1e-4f || w.z <= 1e-4f) continue;
+        int& o = owner[std::size_t(y) * side + x];
+        if (o >= 0) ++overlaps;
+        o = int(t);
+      }
+  }
+  return overlaps;
+}
+
+// A helical ramp (radius 4 to 8 mm, two turns, rising 1.5 mm a turn): one connected piece whose
+// triangles all face +y and whose projection along y covers itself twice.
+Mesh helicalRamp() {
+  Mesh m;
+  m.name = "ramp";
+  const int steps = 64;
+  for (int i = 0; i <= steps; ++i) {
+    const float a = 4.0f * float(M_PI) * i / steps, y = 1.5f * a / (2.0f * float(M_PI)) - 1.5f;
+    for (float r : {4.0f, 8.0f}) m.positions.push_back({r * std::cos(a), y, -r * std::sin(a)});
+  }
+  for (unsigned i = 0; i < unsigned(steps); ++i) {
+    m.triangles.push_back({2 * i, 2 * i + 1, 2 * i + 3});
+    m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 2});
+  }
+  return m;
+}
+
 float maxDifference(glm::vec3 a, glm::vec3 b) {
   const glm::vec3 d = glm::abs(a - b);
   return std::max({d.x, d.y, d.z});
@@ -117,6 +160,7 @@ TEST(PartAtlas, TrianglesInsideTheUnitSquareWithoutOverlapAndWithPadding) {
       EXPECT_NEAR(texelArea, projected * atlas.texelsPerMm * atlas.texelsPerMm, 1e-3f * (1 + texelArea));
       EXPECT_GE(std::abs(n[chart.axis / 2]), 0.577f * glm::length(n) - 1e-4f);  // dominant axis
     }
+    EXPECT_EQ(overlappingTexels(atlas), 0);
     // Chart rectangles are disjoint and inside the texture.
     for (std::size_t a = 0; a < atlas.charts.size(); ++a) {
       const UvAtlas::Chart& ca = atlas.charts[a];
@@ -144,6 +188,21 @@ TEST(PartAtlas, BoxHasSixChartsAndPrismConnectsItsSideAcrossRepeatedStlVertices)
   const UvAtlas prism =
       buildUvAtlas(placeMesh(loadMesh(kerf::testing::writePrismStl(dir / "p.stl", 9, 24, 24)), {}));
   EXPECT_EQ(prism.charts.size(), 6u);
+}
+
+TEST(PartAtlas, APieceThatWindsOverItselfIsSplitSoNoTexelIsShared) {
+  const Mesh ramp = helicalRamp();
+  UvAtlasOptions options;
+  options.resolution = 512;
+  const UvAtlas atlas = buildUvAtlas(ramp, options);
+  // Projected along y as one chart, the two turns would share texels; split, none is shared.
+  EXPECT_EQ(atlas.charts.size(), ramp.triangles.size());
+  EXPECT_EQ(overlappingTexels(atlas), 0);
+  for (const UvAtlas::Chart& c : atlas.charts) EXPECT_EQ(c.axis, 2);  // +y
+  // One turn alone does not overlap: one chart.
+  Mesh turn = ramp;
+  turn.triangles.resize(ramp.triangles.size() / 2 - 2);
+  EXPECT_EQ(buildUvAtlas(turn, options).charts.size(), 1u);
 }
 
 TEST(PartAtlas, TooManyPiecesForTheResolutionIsAnError) {
