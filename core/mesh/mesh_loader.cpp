@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <glm/glm.hpp>
@@ -88,8 +89,16 @@ Mesh loadMesh(const std::filesystem::path& path) {
   const aiScene* scene =
       importer.ReadFile(name, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_GenSmoothNormals |
                                   aiProcess_JoinIdenticalVertices);
-  if (!scene || !scene->mRootNode)
-    throw InputError("cannot read mesh " + name + ": " + std::string(importer.GetErrorString()));
+  if (!scene || !scene->mRootNode) {
+    std::string why = importer.GetErrorString();
+    std::string lower = why;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    // A file of points or lines loses all its meshes when those are dropped.
+    if (lower.find("no meshes") != std::string::npos)
+      throw InputError("mesh " + name + " has no faces (triangles or polygons)");
+    throw InputError("cannot read mesh " + name + ": " + why);
+  }
   Mesh mesh;
   mesh.name = path.filename().string();
   appendNode(mesh, *scene, *scene->mRootNode, glm::mat4(1.0f));
