@@ -11,6 +11,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   # OpenVDB volume export; Debian's find module also needs Boost.Iostreams, which the package does not pull in
   libopenvdb-dev libboost-iostreams-dev
+  # textured parts: meshes read with assimp, binary glTF written with tinygltf
+  libassimp-dev libtinygltf-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # Qt 6 (Widgets, OpenGL, OpenGLWidgets, Concurrent, Test) and its X11 platform plugin

@@ -2,7 +2,7 @@
 //
 // Passes (u_pass): 0 = the block's faces (the part behind the cut, or all of it), 1 = the cut surface,
 // 2 = the ghost of the part in front of the cut (flat and translucent, so the cut surface stays
-// readable through it).
+// readable through it), 3 = a placed part (issue 7): the wood without a face tint or edge lines.
 //
 // Shading, in linear light (the model's colours are sRGB-encoded, like photographs):
 // - diffuse: a key light above-left of the viewer, a fill light and a little ambient, balanced so a
@@ -87,6 +87,7 @@ vec3 shade(vec3 albedo, vec3 n, vec3 p, vec3 fiber, float gloss, bool withFiber)
 void main() {
   vec3 p = v_position;
   vec3 n = normalize(v_normal);
+  if (u_pass == 3 && dot(n, u_eye - p) < 0.0) n = -n;  // a file whose triangles face inwards
   vec3 pixel = fwidth(p);  // block mm per screen pixel along each axis (before any discard)
   float side = dot(p, u_cutNormal) - u_cutOffset;
   float sidePixel = fwidth(side);
@@ -118,7 +119,7 @@ void main() {
     fiber = u_axisDirection;
     withFiber = false;
   } else {
-    WoodSample s = evaluateWood(p, u_pass == 1 ? -1 : u_faceIndex);
+    WoodSample s = evaluateWood(p, u_pass == 1 || u_pass == 3 ? -1 : u_faceIndex);
     albedo = s.color;
     fiber = s.fiberDirection;
     gloss = (1.0 - 0.6 * s.pore) * mix(0.7, 1.0, s.latewood);
@@ -126,7 +127,7 @@ void main() {
   vec3 color = shade(albedo, n, p, fiber, gloss, withFiber);
   if (u_pass == 1) {
     color = mix(color, kCutLine, 0.9 * (1.0 - smoothstep(0.8, 2.0, edge)));
-  } else {
+  } else if (u_pass == 0) {
     color = mix(color, color * 0.45 + kEdgeDark, 0.8 * edgeLine);
     color = mix(color, kCutLine, 0.9 * cutLine);
   }

@@ -17,6 +17,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/gl_helpers.hpp"
+#include "gl/part_mesh_renderer.hpp"
 #include "gl/wood_program.hpp"
 
 namespace kerf {
@@ -73,6 +74,8 @@ void Viewport3D::releaseGl() {
   for (auto& texture : photoTextures_) texture.reset();
   blockProgram_.reset();
   backgroundProgram_.reset();
+  if (partRenderer_) partRenderer_->release();
+  partDirty_ = true;
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &capArray_);
   glDeleteVertexArrays(1, &emptyArray_);
@@ -136,6 +139,12 @@ void Viewport3D::setFacePhotos(const std::array<QImage, 6>& photos) {
   photos_ = photos;
   photosDirty_ = true;
   if (showPhotos_) sceneChanged(false);
+}
+
+void Viewport3D::setPart(std::shared_ptr<const Mesh> placedMesh) {
+  part_ = std::move(placedMesh);
+  partDirty_ = true;
+  sceneChanged(false);
 }
 
 void Viewport3D::setShowPhotos(bool show) {
@@ -350,6 +359,11 @@ void Viewport3D::paintGL() {
     modelDirty_ = false;
   }
   if (photosDirty_) uploadPhotos();
+  if (partDirty_) {
+    if (!partRenderer_) partRenderer_ = std::make_unique<PartMeshRenderer>();
+    if (part_) partRenderer_->upload(*part_);
+    partDirty_ = false;
+  }
 
   const int divisor = interactive_ ? chooseDivisor() : 1;
   const GLuint screen = defaultFramebufferObject();
@@ -477,8 +491,12 @@ void Viewport3D::renderScene(QOpenGLFramebufferObject& target, int rowBegin, int
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    drawBlock(false);
-    if (cutOn) {
+    if (part_) {
+      drawPart();  // the part, then the whole block ghosted around it
+    } else {
+      drawBlock(false);
+    }
+    if (cutOn && !part_) {
       drawCap();
       if (cutSide_ == CutSide::Ghost) {
         glEnable(GL_BLEND);
@@ -510,6 +528,25 @@ void Viewport3D::drawBlock(bool ghost) {
     glDrawArrays(GL_TRIANGLES, face * 6, 6);
   }
   glActiveTexture(GL_TEXTURE0);
+}
+
+void Viewport3D::drawPart() {
+  QOpenGLShaderProgram& program = blockProgram_->program();
+  program.setUniformValue("u_pass", 3);
+  program.setUniformValue("u_faceIndex", -1);
+  program.setUniformValue("u_showPhoto", false);
+  // The whole part, uncut: a mesh is a surface, so a cut would show its inside faces, not the wood
+  // inside the part.
+  program.setUniformValue("u_cutEnabled", false);
+  glDisable(GL_CULL_FACE);  // files wind their triangles either way; block.frag turns the normal to the eye
+  partRenderer_->draw();
+  glEnable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // alpha stays 1
+  glDepthMask(GL_FALSE);
+  drawBlock(true);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
 }
 
 void Viewport3D::drawCap() {
@@ -557,7 +594,7 @@ void Viewport3D::drawOverlay(QPainter& painter) {
     if (glm::dot(eye - f.center, f.normal) <= 0.0f) continue;
     const float facing = glm::dot(glm::normalize(eye - f.center), f.normal);
     if (facing < 0.25f) continue;
-    if (cutEnabled_ && cutSide_ == CutSide::Hide &&
+    if (cutEnabled_ && !part_ && cutSide_ == CutSide::Hide &&
         glm::dot(f.center, gizmo_.normal()) > gizmo_.setting().offsetMm)
       continue;
     const glm::vec3 p = camera_.project(f.center + f.normal * 0.01f);
@@ -595,7 +632,7 @@ void Viewport3D::drawOverlay(QPainter& painter) {
     }
   }
 
-  if (!cutEnabled_ || !handlesVisible_ || !gizmo_.meetsBlock()) return;
+  if (!cutEnabled_ || !handlesVisible_ || part_ || !gizmo_.meetsBlock()) return;
   const CutGizmo::Handle active = gizmo_.dragging() ? gizmo_.dragHandle() : hover_;
   const float centreDepth = camera_.project(gizmo_.pivot()).z;
 
@@ -694,8 +731,9 @@ void Viewport3D::mousePressEvent(QMouseEvent* event) {
   const glm::vec2 px(event->position().x(), event->position().y());
   if (dragMode_ != DragMode::None) return;
   if (event->button() == Qt::LeftButton) {
-    const CutGizmo::Handle handle =
-        cutEnabled_ && handlesVisible_ && model_ ? gizmo_.pick(camera_, px) : CutGizmo::Handle::None;
+    const CutGizmo::Handle handle = cutEnabled_ && handlesVisible_ && model_ && !part_
+                                        ? gizmo_.pick(camera_, px)
+                                        : CutGizmo::Handle::None;
     if (handle != CutGizmo::Handle::None && gizmo_.beginDrag(handle, camera_, px)) {
       emittedDuringDrag_ = false;
       dragMode_ = DragMode::Cut;
@@ -718,7 +756,8 @@ void Viewport3D::mouseMoveEvent(QMouseEvent* event) {
   lastMouse_ = pos;
   switch (dragMode_) {
     case DragMode::None:
-      setHover(cutEnabled_ && handlesVisible_ && model_ ? gizmo_.pick(camera_, px) : CutGizmo::Handle::None);
+      setHover(cutEnabled_ && handlesVisible_ && model_ && !part_ ? gizmo_.pick(camera_, px)
+                                                                  : CutGizmo::Handle::None);
       break;
     case DragMode::Orbit:
       camera_.orbit(delta);
@@ -758,7 +797,8 @@ void Viewport3D::mouseReleaseEvent(QMouseEvent* event) {
     dragMode_ = DragMode::None;
   }
   const glm::vec2 px(lastMouse_.x(), lastMouse_.y());
-  hover_ = cutEnabled_ && handlesVisible_ && model_ ? gizmo_.pick(camera_, px) : CutGizmo::Handle::None;
+  hover_ =
+      cutEnabled_ && handlesVisible_ && model_ && !part_ ? gizmo_.pick(camera_, px) : CutGizmo::Handle::None;
   updateCursor();
   update();
   event->accept();

@@ -15,6 +15,10 @@
 // started from; nothing when the plane never changed). setCutPlane() during a drag is ignored (the
 // editor echoing the signal back is harmless); it never emits.
 //
+// Part (issue 7): setPart() shows a placed mesh inside the block, coloured per fragment by the same wood
+// model (the block's wood where the part would be cut from it), with the block drawn ghosted around it
+// (widgets/gl/part_mesh_renderer.hpp). The cut is not applied while a part is shown.
+//
 // Navigation: left-drag elsewhere orbits, right/middle-drag pans, the wheel zooms towards the cursor;
 // keys: F fit, 1 / 3 / 7 front / right / top (Ctrl: back / left / bottom, as in Blender), Home reset.
 //
@@ -45,6 +49,8 @@ class QPainter;
 namespace kerf {
 
 class WoodProgram;
+class PartMeshRenderer;
+struct Mesh;
 
 class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   Q_OBJECT
@@ -73,6 +79,10 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void setFacePhotos(const std::array<QImage, 6>& photos);
   void setShowPhotos(bool show);
   bool showPhotos() const { return showPhotos_; }
+
+  // A part placed in the block (block mm; null: none). Uploads on the next frame.
+  void setPart(std::shared_ptr<const Mesh> placedMesh);
+  bool showsPart() const { return part_ != nullptr; }
 
   // The default three-quarter view (faces A, B, E), fitted. Until the user zooms or pans, the view
   // stays fitted when the widget is resized or a block of another size arrives.
@@ -141,6 +151,7 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   int chooseBandCount(QSize full) const;
   void drawBlock(bool ghost);
   void drawCap();
+  void drawPart();
   void drawOverlay(QPainter& painter);
   void setHover(CutGizmo::Handle handle);
   void updateCursor();
@@ -157,6 +168,10 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   CutSide cutSide_ = CutSide::Ghost;
   bool handlesVisible_ = true;
   float fiberHighlight_ = 1.0f;
+
+  std::shared_ptr<const Mesh> part_;
+  bool partDirty_ = false;
+  std::unique_ptr<PartMeshRenderer> partRenderer_;
 
   std::array<QImage, 6> photos_;
   bool photosDirty_ = false;

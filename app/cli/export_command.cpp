@@ -1,30 +1,33 @@
-// export: faces, cuts, volumes and depth stacks in the format the output path's extension names
-// (core/export/export_job.hpp, docs/export.md).
+// export: faces, cuts, volumes, depth stacks and textured parts in the format the output path's extension
+// names (core/export/export_job.hpp, docs/export.md).
 #include <cstdio>
 
 #include "command.hpp"
 #include "export/export_job.hpp"
 #include "io/project.hpp"
 #include "util/error.hpp"
+#include "util/number_list.hpp"
 
 namespace kerf::cli {
 
 Command addExportCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "export",
-      "Export a face or cut image (.png/.tif/.exr), a volume (.nrrd/.vdb) or a depth stack (folder)");
+      "Export a face or cut image (.png/.tif/.exr), a volume (.nrrd/.vdb), a depth stack (folder) or a "
+      "textured part (.obj/.glb with --mesh)");
   struct Options {
     std::string document, out, face, plane, layer = "colour", exrType = "half", quantity = "growth",
-                                            depthStack;
-    float pxPerMm = 10.0f;
-    int samples = 2, resolution = 128;
-    bool noLayers = false;
+                                            depthStack, mesh, place, rotate;
+    float pxPerMm = 10.0f, scale = 1.0f;
+    int samples = 2, resolution = 128, textureRes = 1024;
+    bool noLayers = false, centre = false, requireFit = false;
   };
   auto o = std::make_shared<Options>();
   command->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   command
       ->add_option("--out", o->out,
-                   "Output: .png .tif .tiff .exr (image), .nrrd .vdb (volume), a folder (--depth-stack)")
+                   "Output: .png .tif .tiff .exr (image), .nrrd .vdb (volume), a folder (--depth-stack), "
+                   ".obj .glb (part, --mesh)")
       ->required();
   command->add_option("--face", o->face, "Image of face A..F");
   command->add_option("--plane", o->plane,
@@ -32,7 +35,8 @@ Command addExportCommand(CLI::App& app) {
   command
       ->add_option("--px-per-mm", o->pxPerMm, "Image resolution; stored in the file as DPI and mm per pixel")
       ->check(CLI::Range(0.01f, 400.0f));
-  command->add_option("--samples", o->samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
+  command->add_option("--samples", o->samples, "Supersamples per pixel side (parts: per texel side)")
+      ->check(CLI::Range(1, 8));
   command->add_option("--layer", o->layer, "What a PNG holds: colour, growth (16-bit) or rings")
       ->check(CLI::IsMember({"colour", "color", "growth", "rings"}));
   command->add_flag("--no-layers", o->noLayers, "TIFF/EXR: colour only, without the growth and rings layers");
@@ -46,6 +50,22 @@ Command addExportCommand(CLI::App& app) {
   command->add_option(
       "--depth-stack", o->depthStack,
       "FACE,STEP_MM,DEPTH_MM: the face after removing 0, STEP, .. DEPTH mm, as numbered PNGs");
+  command->add_option("--mesh", o->mesh, "Part: the mesh to bake (.obj, .stl, .ply; units read as mm)");
+  command->add_option(
+      "--place", o->place,
+      "Part: tx,ty,tz mm, where the mesh origin goes in the block (with --centre: the part's centre)");
+  command->add_option(
+      "--rotate", o->rotate,
+      "Part: rx,ry,rz degrees about the block's x, then y, then z axis (applied before --place)");
+  command->add_option("--scale", o->scale, "Part: uniform scale of the mesh (before turning)")
+      ->check(CLI::PositiveNumber);
+  command->add_flag(
+      "--centre,--center", o->centre,
+      "Part: centre the turned part's bounding box at --place (default 0,0,0: the block centre)");
+  command->add_option("--texture-res", o->textureRes, "Part: side of the square baked texture in px")
+      ->check(CLI::Range(16, 16384));
+  command->add_flag("--require-fit", o->requireFit,
+                    "Part: fail when the part sticks out of the block (default: export and warn)");
   return {command, [o](Context& context) {
             ExportRequest request;
             request.out = o->out;
@@ -63,12 +83,26 @@ Command addExportCommand(CLI::App& app) {
             request.quantity = volumeQuantityFromName(o->quantity);
             request.resolution = o->resolution;
             if (!o->depthStack.empty()) request.depthStack = parseDepthStack(o->depthStack);
+            const auto vec3Option = [](const std::string& text, const std::string& option) {
+              const std::vector<float> v = parseNumberList(text, option);
+              if (v.size() != 3) throw InputError(option + " takes 3 numbers, not \"" + text + "\"");
+              return glm::vec3(v[0], v[1], v[2]);
+            };
+            request.part.mesh = o->mesh;
+            if (!o->place.empty()) request.part.placement.translationMm = vec3Option(o->place, "--place");
+            if (!o->rotate.empty()) request.part.placement.rotationDeg = vec3Option(o->rotate, "--rotate");
+            request.part.placement.scale = o->scale;
+            request.part.placement.centreInBlock = o->centre;
+            request.part.textureResolution = o->textureRes;
+            request.part.requireFit = o->requireFit;
             exportKindOf(request);  // a bad path or option combination fails before the project is read
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
             const ExportSummary summary = runExport(model, request, context.progress());
             context.samples = summary.samples;
             std::printf("%s\n", summary.message.c_str());
+            if (!summary.warning.empty())
+              std::fprintf(stderr, "kerf-cli: warning: %s\n", summary.warning.c_str());
           }};
 }
 

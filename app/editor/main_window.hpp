@@ -38,6 +38,7 @@ class FacesView;
 class JobRunner;
 class LogPanel;
 class ParameterPanel;
+class PartExportDialog;
 class RecentFiles;
 class Viewport3D;
 
@@ -133,6 +134,9 @@ class MainWindow : public QMainWindow {
   // (startExport, also for tests), ending in exportFinished or exportFailed (with a message box).
   ExportDialog* showExportDialog(ExportDialog::Kind kind);
   int startExport(const ExportRequest& request);
+  // File > Export > Part… (main_window_export.cpp): modeless; the placed part shows in the 3D view while
+  // it is open.
+  PartExportDialog* showPartExportDialog();
   QAction* exportAction(ExportDialog::Kind kind) const { return exportActions_[static_cast<int>(kind)]; }
 
  signals:

@@ -1,5 +1,6 @@
-// MainWindow: File > Export: face and cut images, volumes and depth stacks (export_dialog.hpp), written by
-// the core's runExport (the code of `kerf-cli export`) as background jobs with progress and cancel.
+// MainWindow: File > Export: face and cut images, volumes and depth stacks (export_dialog.hpp) and textured
+// parts (part_export_dialog.hpp), written by the core's runExport (the code of `kerf-cli export`) as
+// background jobs with progress and cancel.
 #include <QAction>
 #include <QFileInfo>
 #include <QMenu>
@@ -11,6 +12,8 @@
 #include "document.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
+#include "part_export_dialog.hpp"
+#include "viewport3d.hpp"
 
 namespace kerf {
 namespace {
@@ -46,6 +49,10 @@ void MainWindow::createExportActions(QMenu* exportMenu) {
     action->setStatusTip(entry.tip);
     exportActions_[static_cast<int>(entry.kind)] = action;
   }
+  QAction* part = exportMenu->addAction(tr("&Part…"), this, [this] { showPartExportDialog(); });
+  part->setStatusTip(
+      tr("A mesh (OBJ, STL, PLY) placed in the block, baked with its wood as OBJ+MTL+PNG or "
+         "glTF; shown in the 3D view while you place it"));
   exportMenu->addSeparator();
   exportMenu->addAction(tr("All Model Faces as PNG…"), this, &MainWindow::exportFaces);
 
@@ -78,17 +85,32 @@ ExportDialog* MainWindow::showExportDialog(ExportDialog::Kind kind) {
   return dialog;
 }
 
+PartExportDialog* MainWindow::showPartExportDialog() {
+  auto* dialog = new PartExportDialog(document_->project().block, exportFolder(), this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &PartExportDialog::partChanged, viewport_,
+          [this](std::shared_ptr<const Mesh> placed) { viewport_->setPart(std::move(placed)); });
+  connect(dialog, &QDialog::accepted, this, [this, dialog] {
+    QSettings().setValue("export/folder", QFileInfo(dialog->path()).absolutePath());
+    startExport(dialog->request());
+  });
+  dialog->show();  // modeless: the 3D view can be turned while placing the part
+  return dialog;
+}
+
 int MainWindow::startExport(const ExportRequest& request) {
   const auto model = document_->model();
   const QString path = QString::fromStdString(request.out.string());
   const int id = jobs_->start(
       tr("Exporting %1").arg(QFileInfo(path).fileName()),
       [model, request](const Progress& progress, const JobRunner::Preview&) -> QVariant {
-        return QString::fromStdString(runExport(*model, request, progress).message);
+        const ExportSummary summary = runExport(*model, request, progress);
+        return QStringList{QString::fromStdString(summary.message), QString::fromStdString(summary.warning)};
       },
       [this, path](const QVariant& done) {
-        const QString message = done.toString();
+        const QString message = done.toStringList().value(0), warning = done.toStringList().value(1);
         logMessage("info", message);
+        if (!warning.isEmpty()) logMessage("warning", warning);
         statusBar()->showMessage(message, 6000);
         emit exportFinished(path, message);
       },

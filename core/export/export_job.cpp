@@ -25,10 +25,25 @@ std::string sizeText(int width, int height, float pxPerMm) {
   return s.str();
 }
 
-// The mesh part export (issue 7: a placed OBJ/STL/PLY part baked with the block's wood, written as
-// OBJ+MTL+PNG or binary glTF) goes here.
-ExportSummary exportPart(const WoodModel&, const ExportRequest& request, const Progress&) {
-  throw InputError("exporting a textured part (" + lowerExtension(request.out) + ") is not yet supported");
+ExportSummary runPartExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {
+  PartExportOptions options = request.part;
+  options.samples = request.samples;  // --samples, as for images
+  const PartExportResult result = exportPart(model, options, request.out, progress);
+  ExportSummary summary;
+  summary.kind = ExportKind::Part;
+  summary.samples = result.samples;
+  std::ostringstream s;
+  s.precision(4);
+  s << "part written to " << request.out.string() << " (" << result.triangles << " triangles in "
+    << result.charts << " charts, " << request.part.textureResolution << " px texture, " << result.texelsPerMm
+    << " texels/mm";
+  if (result.files.size() > 1)
+    s << "; with " << result.files[1].filename().string() << " and " << result.files[2].filename().string();
+  s << "); " << result.fit.describe();
+  summary.message = s.str();
+  if (!result.fit.fits())
+    summary.warning = result.fit.describe() + "; the wood there is the model continued beyond the block";
+  return summary;
 }
 
 }  // namespace
@@ -52,7 +67,7 @@ ExportKind exportKindOf(const ExportRequest& request) {
   if (isPartExtension(e)) return ExportKind::Part;
   throw InputError("cannot tell what to export from \"" + request.out.string() +
                    "\": use .png, .tif, .tiff or .exr for an image, .nrrd or .vdb for a volume, "
-                   "or a folder with --depth-stack");
+                   ".obj or .glb for a textured part (with --mesh), or a folder with --depth-stack");
 }
 
 ExportSummary runExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {
@@ -105,7 +120,7 @@ ExportSummary runExport(const WoodModel& model, const ExportRequest& request, co
       return summary;
     }
     case ExportKind::Part:
-      return exportPart(model, request, progress);
+      return runPartExport(model, request, progress);
   }
   return summary;
 }

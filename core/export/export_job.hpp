@@ -4,7 +4,7 @@
 //   .png .tif .tiff .exr   a face (face) or a cut (plane) image with layers (export/image_export.hpp)
 //   .nrrd .vdb             a volume of the growth field or the colour (render/volume_export.hpp)
 //   a folder               a depth stack (depthStack set; export/depth_stack.hpp)
-//   .obj .glb              a textured part: not yet supported (see exportPart below)
+//   .obj .glb              a textured part: a placed mesh baked with the wood (export/part_export.hpp)
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -12,6 +12,7 @@
 
 #include "export/depth_stack.hpp"
 #include "export/image_export.hpp"
+#include "export/part_export.hpp"
 #include "render/volume_export.hpp"
 
 namespace kerf {
@@ -31,6 +32,8 @@ struct ExportRequest {
   int resolution = 128;
   // Depth stacks (face, step, depth; pxPerMm, samples and image.pngLayer come from the fields above).
   std::optional<DepthStackOptions> depthStack;
+  // Parts (.obj, .glb): the mesh, its placement and the texture resolution (supersampling: `samples`).
+  PartExportOptions part;
 };
 
 // The kind `request` asks for. Throws InputError for an unknown extension, an image without a face or
@@ -41,6 +44,7 @@ struct ExportSummary {
   ExportKind kind = ExportKind::Image;
   std::string message;      // one line for the user: what was written where
   std::size_t samples = 0;  // model evaluations, for --stats
+  std::string warning;      // something the user should know although the export succeeded (empty: none)
 };
 
 // Checks the request, renders and writes, atomically (a depth stack: each file). Throws InputError
