@@ -4,11 +4,13 @@
 #include <cmath>
 #include <memory>
 
+#include "../app/image_change.hpp"
 #include "demo/demo_block.hpp"
 #include "mesh/part_placement.hpp"
 #include "viewport3d.hpp"
 
 using namespace kerf;
+using kerf::testing::changedShare;
 
 namespace {
 
@@ -51,19 +53,6 @@ std::shared_ptr<const Mesh> placedTurnedPart() {
   PartPlacement p;
   p.rotationDeg = {20, 0, 0};
   return std::make_shared<const Mesh>(placeMesh(m, p));  // no normals: drawn flat per triangle
-}
-
-double changedShare(const QImage& a, const QImage& b) {
-  const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
-  if (x.size() != y.size()) return 1.0;
-  int changed = 0;
-  for (int row = 0; row < x.height(); ++row)
-    for (int col = 0; col < x.width(); ++col) {
-      const QRgb p = x.pixel(col, row), q = y.pixel(col, row);
-      changed +=
-          std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q)) > 24;
-    }
-  return double(changed) / (x.width() * x.height());
 }
 
 }  // namespace
