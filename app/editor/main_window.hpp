@@ -31,6 +31,7 @@ class KnotTable;
 class LogView;
 struct KnotShape;
 struct LogModel;
+struct BoardWood;
 class CutPlaneControls;
 class CutView;
 class Document;
@@ -180,6 +181,9 @@ class MainWindow : public QMainWindow {
   void attachLog(LogModel log);
   void showLog();
   void renderBoardFaces();
+  // The board's wood for the 3D view and the cut panel (GLSL, per fragment); `logOrParameters`: the
+  // knot field and the colour map are rebuilt, otherwise only the board moved.
+  void updateBoardWood(bool logOrParameters);
   void addKnot();
   void deleteKnot(int knot);
   void editKnot(int knot, const KnotShape& shape);
@@ -267,6 +271,7 @@ class MainWindow : public QMainWindow {
   QAction* saveLogAction_ = nullptr;
   QAction* closeLogAction_ = nullptr;
   bool logShown_ = false;  // the views show a log (its board's faces)
+  std::shared_ptr<const BoardWood> boardWood_;  // what the 3D view and the cut panel show in log mode
 };
 
 }  // namespace kerf

@@ -15,6 +15,7 @@
 #include <numbers>
 
 #include "board_controls.hpp"
+#include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "field/knot_shape.hpp"
@@ -24,6 +25,7 @@
 #include "log_board_faces.hpp"
 #include "log_view.hpp"
 #include "main_window.hpp"
+#include "render/board_wood.hpp"
 #include "util/error.hpp"
 #include "viewport3d.hpp"
 
@@ -82,7 +84,12 @@ void MainWindow::createLogDocks() {
     if (!document_->log()) return;
     logView_->setBoard(document_->log()->board);
     boardControls_->setBoard(document_->log()->board);
+    updateBoardWood(false);
     renderFaces();
+  });
+  // Knot parameters and colours (the schema's sliders) change the field.
+  connect(document_, &Document::modelChanged, this, [this] {
+    if (document_->log()) updateBoardWood(true);
   });
 }
 
@@ -200,10 +207,11 @@ void MainWindow::showLog() {
   if (log) {
     logView_->setBoard(log->board);
     boardControls_->setBoard(log->board);
-  } else {  // the 3D view shows the block's own model again
-    viewport_->setFacePhotos(document_->photos());
+    viewport_->setShowPhotos(false);  // the document's photos are not of this board
+  } else {                            // the 3D view shows the block's own model again
     viewport_->setShowPhotos(showPhotosOn3dAction_ && showPhotosOn3dAction_->isChecked());
   }
+  updateBoardWood(true);
   if (log || hadLog) renderFaces();  // a document without a log renders on modelChanged alone
 }
 
@@ -217,8 +225,6 @@ void MainWindow::renderBoardFaces() {
   const auto show = [this](const QVariant& faces) {
     renderings_ = faces.value<std::array<QImage, 6>>();
     updateFacesView();
-    viewport_->setFacePhotos(renderings_);
-    viewport_->setShowPhotos(true);
   };
   renderJob_ = jobs_->start(
       tr("Rendering board"),
@@ -240,6 +246,29 @@ void MainWindow::renderBoardFaces() {
         emit facesPreviewed();
       },
       false);
+}
+
+// The knot field is made on the GUI thread: tabulating the knots' noise takes a few milliseconds
+// (docs/performance.md), and a board move reuses it.
+void MainWindow::updateBoardWood(bool logOrParameters) {
+  const auto& log = document_->log();
+  if (!log) {
+    boardWood_.reset();
+  } else {
+    auto wood = std::make_shared<BoardWood>();
+    if (logOrParameters || !boardWood_) {
+      const WoodParameters& params = document_->project().params;
+      wood->field = std::make_shared<const KnotField>(log->log, KnotSettings::fromParameters(params));
+      wood->colors = std::make_shared<const WoodColorMap>(logColorMap(log->log, params));
+    } else {
+      wood->field = boardWood_->field;
+      wood->colors = boardWood_->colors;
+    }
+    wood->board = log->board;
+    boardWood_ = std::move(wood);
+  }
+  viewport_->setBoardWood(boardWood_);
+  cutView_->setBoardWood(boardWood_);
 }
 
 void MainWindow::addKnot() {
