@@ -272,6 +272,7 @@ class MainWindow : public QMainWindow {
   QAction* closeLogAction_ = nullptr;
   bool logShown_ = false;  // the views show a log (its board's faces)
   std::shared_ptr<const BoardWood> boardWood_;  // what the 3D view and the cut panel show in log mode
+  int boardWoodJob_ = 0;                         // the knot field being made in the background
 };
 
 }  // namespace kerf

@@ -248,27 +248,54 @@ void MainWindow::renderBoardFaces() {
       false);
 }
 
-// The knot field is made on the GUI thread: tabulating the knots' noise takes a few milliseconds
-// (docs/performance.md), and a board move reuses it.
+// The knot field (its noise tables take ~35 ms for the 108 knots of the spruce log, docs/performance.md)
+// is made in the background after a knot or parameter edit, the views keeping the previous wood until it
+// is ready (latest wins); only the first wood of a newly shown log is made at once. A board move reuses
+// the field: only the views' knot grid is rebuilt.
 void MainWindow::updateBoardWood(bool logOrParameters) {
+  if (boardWoodJob_ && jobs_->isRunning(boardWoodJob_)) jobs_->cancel(boardWoodJob_);
+  boardWoodJob_ = 0;
   const auto& log = document_->log();
+  const auto show = [this](std::shared_ptr<const KnotField> field,
+                           std::shared_ptr<const WoodColorMap> colors) {
+    auto wood = std::make_shared<BoardWood>();
+    wood->field = std::move(field);
+    wood->colors = std::move(colors);
+    wood->board = document_->log()->board;
+    boardWood_ = std::move(wood);
+    viewport_->setBoardWood(boardWood_);
+    cutView_->setBoardWood(boardWood_);
+  };
   if (!log) {
     boardWood_.reset();
+    viewport_->setBoardWood(nullptr);
+    cutView_->setBoardWood(nullptr);
+  } else if (!logOrParameters && boardWood_) {
+    show(boardWood_->field, boardWood_->colors);
   } else {
-    auto wood = std::make_shared<BoardWood>();
-    if (logOrParameters || !boardWood_) {
-      const WoodParameters& params = document_->project().params;
-      wood->field = std::make_shared<const KnotField>(log->log, KnotSettings::fromParameters(params));
-      wood->colors = std::make_shared<const WoodColorMap>(logColorMap(log->log, params));
-    } else {
-      wood->field = boardWood_->field;
-      wood->colors = boardWood_->colors;
+    const LogModel logModel = log->log;
+    const WoodParameters params = document_->project().params;
+    const auto make = [logModel, params] {
+      return std::make_pair(std::make_shared<const KnotField>(logModel, KnotSettings::fromParameters(params)),
+                            std::make_shared<const WoodColorMap>(logColorMap(logModel, params)));
+    };
+    if (!boardWood_) {
+      const auto [field, colors] = make();
+      show(field, colors);
+      return;
     }
-    wood->board = log->board;
-    boardWood_ = std::move(wood);
+    boardWoodJob_ = jobs_->start(
+        tr("Knot field"),
+        [make](const Progress&, const JobRunner::Preview&) { return QVariant::fromValue(make()); },
+        [this, show](const QVariant& result) {
+          if (!document_->log()) return;
+          const auto made =
+              result
+                  .value<std::pair<std::shared_ptr<const KnotField>, std::shared_ptr<const WoodColorMap>>>();
+          show(made.first, made.second);
+        },
+        {}, false);
   }
-  viewport_->setBoardWood(boardWood_);
-  cutView_->setBoardWood(boardWood_);
 }
 
 void MainWindow::addKnot() {
