@@ -5,6 +5,7 @@
 #include <random>
 
 #include "render/board_wood.hpp"
+#include "spruce_log.hpp"
 
 using namespace kerf;
 
@@ -61,4 +62,14 @@ TEST(BoardWood, GridChangesNoSample) {
     b.rotationDeg = glm::vec3(17.0f * seed, 40.0f * seed, 8.0f);
     checkGridChangesNothing(field, b, "rotated board, seed " + std::to_string(seed));
   }
+}
+
+TEST(BoardWood, GridChangesNoSampleSpruceLog) {
+  const LogModel* gran = kerf::testing::granLog();
+  if (!gran) GTEST_SKIP() << "the spruce log (shared/data/logs/spruce-gran1) is absent";
+  const KnotField field(*gran, KnotSettings{});
+  checkGridChangesNothing(field, defaultBoard(*gran), "default board of the spruce log");
+  Board b = defaultBoard(*gran);
+  b.rotationDeg += glm::vec3(10.0f, 25.0f, -5.0f);
+  checkGridChangesNothing(field, b, "rotated board of the spruce log");
 }
