@@ -200,6 +200,7 @@ void MainWindow::showLog() {
   logShown_ = log.has_value();
   saveLogAction_->setEnabled(log.has_value());
   closeLogAction_->setEnabled(log.has_value());
+  if (showPhotosOn3dAction_) showPhotosOn3dAction_->setEnabled(!log);  // the photos are not of the board
   logView_->setLog(log ? std::make_shared<const LogModel>(log->log) : nullptr);
   knotTable_->setKnots(log ? log->log.knots : std::vector<Knot>{});
   knotTable_->setEnabled(log.has_value());
