@@ -11,6 +11,7 @@
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <cmath>
 #include <numbers>
 
@@ -46,8 +47,13 @@ void MainWindow::createLogDocks() {
   knotTable_ = new KnotTable(this);
   auto* boardPane = new QSplitter(Qt::Vertical, this);
   boardPane->addWidget(boardControls_);
-  boardPane->addWidget(knotTable_);
+  // Below the placement: the knot table, and the choice of a CLT / veneer / plywood panel from the log.
+  auto* tabs = new QTabWidget(boardPane);
+  tabs->setObjectName("boardTabs");
+  tabs->addTab(knotTable_, tr("Knots"));
+  boardPane->addWidget(tabs);
   boardPane->setStretchFactor(1, 1);
+  createPanelDock(tabs);
   auto* boardDock = new QDockWidget(tr("Board"), this);
   boardDock->setObjectName("boardDock");
   boardDock->setWidget(boardPane);
