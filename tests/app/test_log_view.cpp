@@ -352,6 +352,7 @@ void TestLogView::cutAndThreeDShowTheLogsWood() {
   const double cutMoved = changedShareOnCut(logCut, movedCut, cut);
   Board moved = log().board;
   moved.center.z += 40.0f;
+  QSignalSpy facesRendered(window_.get(), &MainWindow::facesRendered);
   document()->editBoard(moved, true);
   QVERIFY(viewport->boardWood()->board == moved);
   QCOMPARE(cut->boardWood(), viewport->boardWood());
@@ -365,6 +366,7 @@ void TestLogView::cutAndThreeDShowTheLogsWood() {
   QVERIFY(cutMoved > 0.2);
   QVERIFY(boardMovedCut > 0.2);
   QVERIFY(boardMoved3d > 0.06);
+  QVERIFY(waitForFaces(facesRendered));  // the window's picture with the faces of the moved board
   QVERIFY(grabWindowWithGl(window_.get()).save(dir + "/log_mode_cut.png"));
 
   cut->setForcedRenderScale(0);
