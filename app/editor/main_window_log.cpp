@@ -256,8 +256,8 @@ void MainWindow::renderBoardFaces() {
 }
 
 // The knot field (its noise tables take ~35 ms for the 108 knots of the spruce log, docs/performance.md)
-// is made in the background after a knot or parameter edit, the views keeping the previous wood until it
-// is ready (latest wins); only the first wood of a newly shown log is made at once. A board move reuses
+// is made in the background after a knot or parameter edit, the views keeping the previous field until
+// it is ready (latest wins); the field of another log (another stem) is made at once. A board move reuses
 // the field: only the views' knot grid is rebuilt.
 void MainWindow::updateBoardWood(bool logOrParameters) {
   if (boardWoodJob_ && jobs_->isRunning(boardWoodJob_)) jobs_->cancel(boardWoodJob_);
@@ -286,11 +286,17 @@ void MainWindow::updateBoardWood(bool logOrParameters) {
       return std::make_pair(std::make_shared<const KnotField>(logModel, KnotSettings::fromParameters(params)),
                             std::make_shared<const WoodColorMap>(logColorMap(logModel, params)));
     };
-    if (!boardWood_) {
+    // Another log (opened, or another document): at once, so no view shows the old log's wood.
+    const Stem& stem = log->log.stem;
+    const bool sameStem = boardWood_ && boardWood_->field->log().stem.heightStep == stem.heightStep &&
+                          boardWood_->field->log().stem.pith == stem.pith &&
+                          boardWood_->field->log().stem.radii == stem.radii;
+    if (!sameStem) {
       const auto [field, colors] = make();
       show(field, colors);
       return;
     }
+    show(boardWood_->field, boardWood_->colors);  // the board as it is now; the edited knots follow
     boardWoodJob_ = jobs_->start(
         tr("Knot field"),
         [make](const Progress&, const JobRunner::Preview&) { return QVariant::fromValue(make()); },

@@ -237,6 +237,9 @@ void TestLogView::savesAndReopensProjectWithLog() {
   QCOMPARE(document()->undoStack()->count(), 0);
   QCOMPARE(window_->logView()->board().center, saved.board.center);
   QCOMPARE(document()->project().block.size(), saved.board.size);
+  // The 3D view and the cut panel show the reopened board at once.
+  QVERIFY(window_->viewport()->boardWood()->board == saved.board);
+  QVERIFY(window_->cutView()->boardWood()->board == saved.board);
 }
 
 void TestLogView::closesLogAsUndoStep() {
