@@ -119,7 +119,11 @@ void main() {
     fiber = u_axisDirection;
     withFiber = false;
   } else {
+#ifdef KERF_BOARD_WOOD
+    WoodSample s = boardWood(p);  // a board cut from a log (board_wood.glsl)
+#else
     WoodSample s = evaluateWood(p, u_pass == 1 || u_pass == 3 ? -1 : u_faceIndex);
+#endif
     albedo = s.color;
     fiber = s.fiberDirection;
     gloss = (1.0 - 0.6 * s.pore) * mix(0.7, 1.0, s.latewood);

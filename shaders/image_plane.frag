@@ -18,5 +18,9 @@ void main() {
     fragColor = vec4(0.0);
     return;
   }
+#ifdef KERF_BOARD_WOOD
+  fragColor = vec4(boardWood(p).color, 1.0);  // a board cut from a log (board_wood.glsl)
+#else
   fragColor = vec4(evaluateWood(p, u_faceIndex).color, 1.0);
+#endif
 }

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include "gl/board_wood_textures.hpp"
 #include "gl/gl_helpers.hpp"
 #include "gl/wood_program.hpp"
 
@@ -97,6 +98,8 @@ void CutView::cleanupGL() {
   if (!program_ && !vertexArray_) return;  // never initialised, or already cleaned up
   makeCurrent();
   program_.reset();
+  boardProgram_.reset();
+  boardTextures_.reset();
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
   if (vertexBuffer_) glDeleteBuffers(1, &vertexBuffer_);
   if (smallFbo_) glDeleteFramebuffers(1, &smallFbo_);
@@ -121,6 +124,13 @@ void CutView::setModel(std::shared_ptr<const WoodModel> model) {
   const bool sameBlock = model_ && model && model_->block().size() == model->block().size();
   model_ = std::move(model);
   if (!sameBlock) cutChanged();
+  changedInteractively();
+  update();
+}
+
+void CutView::setBoardWood(std::shared_ptr<const BoardWood> wood) {
+  if (wood == boardWood_) return;
+  boardWood_ = std::move(wood);
   changedInteractively();
   update();
 }
@@ -415,11 +425,18 @@ void CutView::paintGL() {
   const QColor bg = backgroundColor();
   glClearColor(bg.redF(), bg.greenF(), bg.blueF(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  if (program_ && bounds()) {
+  if (program_ && glError_.isEmpty() && bounds()) {
     const int scale = chooseRenderScale();
     QElapsedTimer timer;
     timer.start();
-    drawWood(scale);
+    try {
+      drawWood(scale);
+    } catch (const std::exception& e) {  // the board's shader or tables: say why in the view
+      glError_ = QString::fromUtf8(e.what());
+      emit glError(glError_);
+      drawOverlay();
+      return;
+    }
     glFinish();  // the frame's real cost, for choosing the next frame's resolution
     lastFrameMs_ = timer.nsecsElapsed() / 1e6;
     lastScale_ = scale;
@@ -464,9 +481,17 @@ void CutView::drawWood(int scale) {
   glEnable(GL_BLEND);  // outside the block the shader gives alpha 0: the background stays
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-  QOpenGLShaderProgram& program = program_->program();
+  if (boardWood_ && !boardProgram_) {
+    boardProgram_ = std::make_unique<WoodProgram>("cut_polygon.vert", "image_plane.frag", WoodSource::Board);
+    boardTextures_ = std::make_unique<BoardWoodTextures>();
+  }
+  QOpenGLShaderProgram& program = boardWood_ ? boardProgram_->program() : program_->program();
   program.bind();
-  if (uploadedModel_ != model_) {
+  if (boardWood_) {
+    // Texture units from 1 on: unit 0 keeps the model's growth table.
+    boardTextures_->upload(*boardWood_, 1);
+    boardTextures_->bind(program, 1);
+  } else if (uploadedModel_ != model_) {
     program_->setModel(*model_);  // leaves the growth table bound to unit 0
     GLint texture = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_3D, &texture);

@@ -3,6 +3,9 @@
 // (shaders/image_plane.frag): every widget pixel is mapped to the block point under it and evaluated
 // on the GPU, so the picture is sharp at any zoom and matches core's renderCut pixel for pixel.
 //
+// Log mode (setBoardWood): the cut shows the wood of a board cut from a log, its knot model evaluated per
+// pixel (shaders/board_wood.glsl), the same field as the board's faces.
+//
 // Orientation (docs/coordinates.md): the plane is seen from the side its normal points to, "up" on
 // screen is CutPlane::up() and "right" is CutPlane::right(). Outside the cut polygon the view shows its
 // background. A millimetre ruler runs along the bottom and left edges; it measures from the left and
@@ -34,12 +37,14 @@
 #include <optional>
 
 #include "geometry/cut_plane.hpp"
+#include "render/board_wood.hpp"
 #include "render/wood_model.hpp"
 
 class QAction;
 
 namespace kerf {
 
+class BoardWoodTextures;
 class WoodProgram;
 
 class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
@@ -51,6 +56,10 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
 
   void setModel(std::shared_ptr<const WoodModel> model);
   const std::shared_ptr<const WoodModel>& model() const { return model_; }
+  // Log mode: the wood of a board cut from a log instead of the model's (whose block must be the
+  // board's); null goes back to the model's wood.
+  void setBoardWood(std::shared_ptr<const BoardWood> wood);
+  const std::shared_ptr<const BoardWood>& boardWood() const { return boardWood_; }
   void setCutPlane(const CutPlaneSetting& setting);
   const CutPlaneSetting& cutPlane() const { return setting_; }
   // The plane, when it passes through the block of the current model.
@@ -138,6 +147,7 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   std::optional<PlaneRect> bounds() const;
 
   std::shared_ptr<const WoodModel> model_;
+  std::shared_ptr<const BoardWood> boardWood_;
   CutPlaneSetting setting_;
   std::optional<CutPlane> plane_;
 
@@ -155,6 +165,8 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
 
   // GL state
   std::unique_ptr<WoodProgram> program_;
+  std::unique_ptr<WoodProgram> boardProgram_;  // built when a board is first shown
+  std::unique_ptr<BoardWoodTextures> boardTextures_;
   QString glError_;
   unsigned vertexArray_ = 0, vertexBuffer_ = 0;  // the cut polygon, the only geometry drawn
   unsigned smallFbo_ = 0, smallColor_ = 0;

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl/board_wood_textures.hpp"
 #include "gl/gl_helpers.hpp"
 #include "gl/part_mesh_renderer.hpp"
 #include "gl/wood_program.hpp"
@@ -37,6 +38,8 @@ constexpr double kInteractiveTargetMs = 30.0;  // aim of the reduced frames
 constexpr int kMaxDivisor = 4;
 constexpr double kBandTargetMs = 40.0;  // one band of a progressive refinement
 constexpr int kMaxBands = 16;
+// Texture units: 0 the growth table, 1 a photo, from 2 on the board's wood (BoardWoodTextures).
+constexpr int kBoardWoodUnit = 2;
 // The fibre highlight (block.frag): strength and Gaussian width (radians) of the lobe.
 constexpr float kSheenStrength = 0.8f, kSheenWidth = 0.2f;
 
@@ -76,6 +79,8 @@ void Viewport3D::releaseGl() {
   backgroundProgram_.reset();
   if (partRenderer_) partRenderer_->release();
   partDirty_ = true;
+  boardProgram_.reset();
+  boardTextures_.reset();
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &capArray_);
   glDeleteVertexArrays(1, &emptyArray_);
@@ -99,6 +104,13 @@ void Viewport3D::setModel(std::shared_ptr<const WoodModel> model) {
     autoFrame_ = true;
   }
   sceneChanged(!first && model_);
+}
+
+void Viewport3D::setBoardWood(std::shared_ptr<const BoardWood> wood) {
+  if (wood == boardWood_) return;
+  const bool interactive = wood && boardWood_;  // a board moving or a knot slider: draw fast, refine later
+  boardWood_ = std::move(wood);
+  sceneChanged(interactive);
 }
 
 void Viewport3D::setCutPlane(const CutPlaneSetting& setting) {
@@ -364,6 +376,20 @@ void Viewport3D::paintGL() {
     if (part_) partRenderer_->upload(*part_);
     partDirty_ = false;
   }
+  if (boardWood_) {
+    try {
+      if (!boardProgram_) {
+        boardProgram_ = std::make_unique<WoodProgram>("block.vert", "block.frag", WoodSource::Board);
+        boardTextures_ = std::make_unique<BoardWoodTextures>();
+      }
+      boardTextures_->upload(*boardWood_, kBoardWoodUnit);
+    } catch (const std::exception& e) {  // say why instead of showing the wrong wood
+      failure_ = tr("The board's wood cannot be drawn: %1").arg(QString::fromUtf8(e.what()));
+      glReady_ = false;
+      update();
+      return;
+    }
+  }
 
   const int divisor = interactive_ ? chooseDivisor() : 1;
   const GLuint screen = defaultFramebufferObject();
@@ -465,8 +491,9 @@ void Viewport3D::renderScene(QOpenGLFramebufferObject& target, int rowBegin, int
   glClear(GL_DEPTH_BUFFER_BIT);
 
   if (model_ && growthTexture_ != 0) {
-    QOpenGLShaderProgram& program = blockProgram_->program();
+    QOpenGLShaderProgram& program = sceneProgram();
     program.bind();
+    if (boardWood_) boardTextures_->bind(program, kBoardWoodUnit);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_3D, growthTexture_);
     const glm::mat4 viewProjection = camera_.viewProjection();
@@ -516,8 +543,12 @@ void Viewport3D::renderScene(QOpenGLFramebufferObject& target, int rowBegin, int
   glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
 }
 
+QOpenGLShaderProgram& Viewport3D::sceneProgram() {
+  return boardWood_ && boardProgram_ ? boardProgram_->program() : blockProgram_->program();
+}
+
 void Viewport3D::drawBlock(bool ghost) {
-  QOpenGLShaderProgram& program = blockProgram_->program();
+  QOpenGLShaderProgram& program = sceneProgram();
   program.setUniformValue("u_pass", ghost ? 2 : 0);
   glBindVertexArray(vertexArray_);
   for (int face = 0; face < 6; ++face) {
@@ -531,7 +562,7 @@ void Viewport3D::drawBlock(bool ghost) {
 }
 
 void Viewport3D::drawPart() {
-  QOpenGLShaderProgram& program = blockProgram_->program();
+  QOpenGLShaderProgram& program = sceneProgram();  // in log mode the part shows the board's wood
   program.setUniformValue("u_pass", 3);
   program.setUniformValue("u_faceIndex", -1);
   program.setUniformValue("u_showPhoto", false);
@@ -560,7 +591,7 @@ void Viewport3D::drawCap() {
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
                GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  QOpenGLShaderProgram& program = blockProgram_->program();
+  QOpenGLShaderProgram& program = sceneProgram();
   program.setUniformValue("u_pass", 1);
   program.setUniformValue("u_faceIndex", -1);
   program.setUniformValue("u_showPhoto", false);

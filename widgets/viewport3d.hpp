@@ -4,6 +4,9 @@
 // coat highlight and the fibre highlight of Liu et al. 2016 Sec. 2/4.3, after Marschner et al. 2005),
 // with an optional cut plane and the face photos projected onto the faces for comparison.
 //
+// Log mode (setBoardWood): the faces and the cut surface show a board cut from a log, its knot model
+// evaluated per fragment (shaders/board_wood.glsl; knots culled per cell of a coarse grid over the board).
+//
 // Cut: with the cut enabled, the part of the block on the side the normal points to is hidden or drawn
 // ghosted (CutSide), and the cut surface is drawn with the model (no face tint). The view shows handles
 // on the plane (see CutGizmo): left-drag on the cut surface or the arrow moves the plane along its normal,
@@ -39,6 +42,7 @@
 #include "cut_gizmo.hpp"
 #include "geometry/cut_plane.hpp"
 #include "orbit_camera.hpp"
+#include "render/board_wood.hpp"
 #include "render/wood_model.hpp"
 
 class QOpenGLFramebufferObject;
@@ -48,6 +52,7 @@ class QPainter;
 
 namespace kerf {
 
+class BoardWoodTextures;
 class WoodProgram;
 class PartMeshRenderer;
 struct Mesh;
@@ -65,6 +70,11 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // A new block size re-frames the camera; the same size keeps the view.
   void setModel(std::shared_ptr<const WoodModel> model);
   const std::shared_ptr<const WoodModel>& model() const { return model_; }
+
+  // Log mode: the wood of a board cut from a log instead of the model's (whose block must be the
+  // board's); null goes back to the model's wood. Uploads on the next frame (only what changed).
+  void setBoardWood(std::shared_ptr<const BoardWood> wood);
+  const std::shared_ptr<const BoardWood>& boardWood() const { return boardWood_; }
 
   void setCutPlane(const CutPlaneSetting& setting);
   const CutPlaneSetting& cutPlane() const { return gizmo_.setting(); }
@@ -149,6 +159,7 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void renderScene(QOpenGLFramebufferObject& target, int rowBegin, int rowEnd);
   void noteCost(double ms, double pixels);
   int chooseBandCount(QSize full) const;
+  QOpenGLShaderProgram& sceneProgram();  // the board's wood in log mode, else the model's
   void drawBlock(bool ghost);
   void drawCap();
   void drawPart();
@@ -159,6 +170,7 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
   std::shared_ptr<const WoodModel> model_;
   bool modelDirty_ = false;
+  std::shared_ptr<const BoardWood> boardWood_;
   Block block_;
 
   OrbitCamera camera_;
@@ -191,6 +203,8 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   QString rendererName_;
   std::unique_ptr<WoodProgram> blockProgram_;
   std::unique_ptr<QOpenGLShaderProgram> backgroundProgram_;
+  std::unique_ptr<WoodProgram> boardProgram_;  // built when a board is first shown
+  std::unique_ptr<BoardWoodTextures> boardTextures_;
   unsigned growthTexture_ = 0;  // the WoodProgram's growth table (re-bound every frame)
   unsigned vertexArray_ = 0, vertexBuffer_ = 0, capArray_ = 0, capBuffer_ = 0, emptyArray_ = 0;
   std::array<std::unique_ptr<QOpenGLTexture>, 6> photoTextures_;

@@ -6,7 +6,7 @@
 #include "command.hpp"
 #include "field/knot_field.hpp"
 #include "log_arguments.hpp"
-#include "render/layered_panels.hpp"
+#include "render/panel_render.hpp"
 #include "util/error.hpp"
 #include "util/number_list.hpp"
 
@@ -58,41 +58,33 @@ Command addRenderPanelCommand(CLI::App& app) {
                                             ? woodColorMapFromParameters(params, log.stem.maxRadius())
                                             : log.colorMap;
             const KnotField field(log, KnotSettings::fromParameters(params));
-            const FaceId face = *faceFromLetter(o->face[0]);
-            const auto panelSize = [&](glm::vec3 fallback) {
-              if (o->size.empty()) return fallback;
+            PanelOptions options;
+            options.type = o->type == "clt"       ? PanelType::Clt
+                           : o->type == "plywood" ? PanelType::Plywood
+                                                  : PanelType::Veneer;
+            options.resolution = o->resolution;
+            options.face = *faceFromLetter(o->face[0]);
+            if (!o->size.empty()) {
               const std::vector<float> v = parseNumberList(o->size, "--size");
-              if (v.size() != 3 || !(v[0] > 0 && v[1] > 0 && v[2] > 0))
+              if (v.size() != 3)
                 throw InputError("--size takes width,length,thickness in mm (3 positive numbers)");
-              return glm::vec3(v[0], v[1], v[2]);
-            };
-            Image image;
-            std::string what;
-            if (o->type == "clt") {
-              const CltPanel panel = makeCltPanel(log, panelSize({600.0f, 600.0f, 90.0f}),
-                                                  o->layers > 0 ? o->layers : 3, o->lamellaWidth, o->seed);
-              image = renderCltFace(field, colors, panel, face, o->resolution, context.progress());
-              what = "CLT panel, " + std::to_string(panel.layers) + " layers, face " + o->face;
-            } else if (o->type == "plywood") {
-              const PlywoodPanel panel =
-                  makePlywoodPanel(log, panelSize({600.0f, 600.0f, 12.0f}), o->layers > 0 ? o->layers : 5);
-              image = renderPlywoodFace(field, colors, panel, face, o->resolution, context.progress());
-              what = "plywood, " + std::to_string(panel.plies) + " plies, face " + o->face;
-            } else {
-              const std::vector<float> sheet = parseNumberList(o->sheet, "--sheet");
-              if (sheet.size() != 2 || !(sheet[0] > 0 && sheet[1] > 0))
-                throw InputError("--sheet takes length,width in mm (2 positive numbers)");
-              const float height = o->height >= 0.0f
-                                       ? o->height
-                                       : std::max(0.0f, knottiestHeight(log, sheet[1]) - 0.5f * sheet[1]);
-              const VeneerPeel peel = defaultPeel(log, o->thickness, height);
-              if (o->start + sheet[0] > peel.lengthToCore(0.0f))
-                throw InputError("--start + sheet length run past the log's centre");
-              image = renderVeneerSheet(field, colors, peel, o->start, sheet[0], sheet[1], o->resolution,
-                                        context.progress());
-              what = "rotary-cut veneer, r " + std::to_string(peel.radiusAt(o->start)) + " to " +
-                     std::to_string(peel.radiusAt(o->start + sheet[0])) + " mm";
+              options.sizeMm = glm::vec3(v[0], v[1], v[2]);
             }
+            options.layers = o->layers;
+            options.lamellaWidthMm = o->lamellaWidth;
+            options.seed = o->seed;
+            options.veneerThicknessMm = o->thickness;
+            if (options.type == PanelType::Veneer) {
+              const std::vector<float> sheet = parseNumberList(o->sheet, "--sheet");
+              if (sheet.size() != 2)
+                throw InputError("--sheet takes length,width in mm (2 positive numbers)");
+              options.sheetMm = glm::vec2(sheet[0], sheet[1]);
+            }
+            options.startMm = o->start;
+            options.heightMm = o->height;
+            const RenderedPanel panel = renderPanel(field, colors, options, context.progress());
+            const Image& image = panel.image;
+            const std::string& what = panel.description;
             const std::filesystem::path parent = std::filesystem::path(o->out).parent_path();
             if (!parent.empty()) std::filesystem::create_directories(parent);
             writeImage(o->out, image);

@@ -8,11 +8,13 @@
 
 namespace kerf {
 
+WoodColorMap logColorMap(const LogModel& log, const WoodParameters& params) {
+  return log.colorMap.empty() ? woodColorMapFromParameters(params, log.stem.maxRadius()) : log.colorMap;
+}
+
 std::array<QImage, 6> renderLogBoardFaces(const ProjectLog& log, const WoodParameters& params, float pxPerMm,
                                           const Progress& progress) {
-  const WoodColorMap colors = log.log.colorMap.empty()
-                                  ? woodColorMapFromParameters(params, log.log.stem.maxRadius())
-                                  : log.log.colorMap;
+  const WoodColorMap colors = logColorMap(log.log, params);
   const KnotField field(log.log, KnotSettings::fromParameters(params));
   const Block block(log.board.size);
   // A long board (a beam, a whole plank) keeps at most kMaxFacePixels along its longest side.

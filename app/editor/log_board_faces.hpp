@@ -10,6 +10,10 @@
 
 namespace kerf {
 
+// The log's own colour map, else one from the parameters (rings of growth.ring_width, heartwood and
+// sapwood colours).
+WoodColorMap logColorMap(const LogModel& log, const WoodParameters& params);
+
 // Faces A..F at `pxPerMm` (at least 8 px per side, at most 1600 px along the board's longest side); the
 // log's own colour map, else one from the parameters.
 // Throws Cancelled when progress.stop is requested.

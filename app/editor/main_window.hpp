@@ -22,6 +22,8 @@ class QSlider;
 class QToolBar;
 class QUndoView;
 
+class QTabWidget;
+
 namespace kerf {
 
 class AnnotationLayer;
@@ -31,6 +33,10 @@ class KnotTable;
 class LogView;
 struct KnotShape;
 struct LogModel;
+struct BoardWood;
+class ImagePane;
+class PanelControls;
+struct PanelOptions;
 class CutPlaneControls;
 class CutView;
 class Document;
@@ -128,6 +134,10 @@ class MainWindow : public QMainWindow {
   LogView* logView() const { return logView_; }
   BoardControls* boardControls() const { return boardControls_; }
   KnotTable* knotTable() const { return knotTable_; }
+  // CLT, veneer or plywood from the open log, rendered in the background into the Panel view.
+  void showPanel(const PanelOptions& options);
+  PanelControls* panelControls() const { return panelControls_; }
+  ImagePane* panelPane() const { return panelPane_; }
 
   // File > Export (main_window_export.cpp): Face Image, Cut Image (the document's cut plane), Volume and
   // Depth Stack open an ExportDialog (returned, non-modal); its request runs as a background job
@@ -145,6 +155,8 @@ class MainWindow : public QMainWindow {
   void exportFailed(const QString& message);
   // A log is attached (its faces follow with facesPreviewed / facesRendered).
   void logOpened();
+  // A panel (showPanel) is shown at full resolution.
+  void panelRendered();
   // The document has loaded and its faces have rendered (at full resolution).
   void documentReady();
   // Loading failed; the message is also shown in a (non-blocking) message box and the log.
@@ -184,9 +196,13 @@ class MainWindow : public QMainWindow {
   void attachLog(LogModel log);
   void showLog();
   void renderBoardFaces();
+  // The board's wood for the 3D view and the cut panel (GLSL, per fragment); `logOrParameters`: the
+  // knot field and the colour map are rebuilt, otherwise only the board moved.
+  void updateBoardWood(bool logOrParameters);
   void addKnot();
   void deleteKnot(int knot);
   void editKnot(int knot, const KnotShape& shape);
+  void createPanelDock(QTabWidget* boardTabs);  // main_window_panel.cpp
   void clearRingDetection();
   QToolBar* createAnnotationBar(QWidget* parent);
   void applyDetectedTraces(const RingDetection& detection);
@@ -270,7 +286,12 @@ class MainWindow : public QMainWindow {
   std::vector<int> exportJobs_;
   QAction* saveLogAction_ = nullptr;
   QAction* closeLogAction_ = nullptr;
-  bool logShown_ = false;  // the views show a log (its board's faces)
+  bool logShown_ = false;                       // the views show a log (its board's faces)
+  std::shared_ptr<const BoardWood> boardWood_;  // what the 3D view and the cut panel show in log mode
+  int boardWoodJob_ = 0;                        // the knot field being made in the background
+  PanelControls* panelControls_ = nullptr;
+  ImagePane* panelPane_ = nullptr;
+  int panelJob_ = 0;
 };
 
 }  // namespace kerf

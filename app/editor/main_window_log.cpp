@@ -11,10 +11,12 @@
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <cmath>
 #include <numbers>
 
 #include "board_controls.hpp"
+#include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "field/knot_shape.hpp"
@@ -24,6 +26,7 @@
 #include "log_board_faces.hpp"
 #include "log_view.hpp"
 #include "main_window.hpp"
+#include "render/board_wood.hpp"
 #include "util/error.hpp"
 #include "viewport3d.hpp"
 
@@ -44,8 +47,13 @@ void MainWindow::createLogDocks() {
   knotTable_ = new KnotTable(this);
   auto* boardPane = new QSplitter(Qt::Vertical, this);
   boardPane->addWidget(boardControls_);
-  boardPane->addWidget(knotTable_);
+  // Below the placement: the knot table, and the choice of a CLT / veneer / plywood panel from the log.
+  auto* tabs = new QTabWidget(boardPane);
+  tabs->setObjectName("boardTabs");
+  tabs->addTab(knotTable_, tr("Knots"));
+  boardPane->addWidget(tabs);
   boardPane->setStretchFactor(1, 1);
+  createPanelDock(tabs);
   auto* boardDock = new QDockWidget(tr("Board"), this);
   boardDock->setObjectName("boardDock");
   boardDock->setWidget(boardPane);
@@ -82,7 +90,12 @@ void MainWindow::createLogDocks() {
     if (!document_->log()) return;
     logView_->setBoard(document_->log()->board);
     boardControls_->setBoard(document_->log()->board);
+    updateBoardWood(false);
     renderFaces();
+  });
+  // Knot parameters and colours (the schema's sliders) change the field.
+  connect(document_, &Document::modelChanged, this, [this] {
+    if (document_->log()) updateBoardWood(true);
   });
 }
 
@@ -193,6 +206,7 @@ void MainWindow::showLog() {
   logShown_ = log.has_value();
   saveLogAction_->setEnabled(log.has_value());
   closeLogAction_->setEnabled(log.has_value());
+  if (showPhotosOn3dAction_) showPhotosOn3dAction_->setEnabled(!log);  // the photos are not of the board
   logView_->setLog(log ? std::make_shared<const LogModel>(log->log) : nullptr);
   knotTable_->setKnots(log ? log->log.knots : std::vector<Knot>{});
   knotTable_->setEnabled(log.has_value());
@@ -200,10 +214,11 @@ void MainWindow::showLog() {
   if (log) {
     logView_->setBoard(log->board);
     boardControls_->setBoard(log->board);
-  } else {  // the 3D view shows the block's own model again
-    viewport_->setFacePhotos(document_->photos());
+    viewport_->setShowPhotos(false);  // the document's photos are not of this board
+  } else {                            // the 3D view shows the block's own model again
     viewport_->setShowPhotos(showPhotosOn3dAction_ && showPhotosOn3dAction_->isChecked());
   }
+  updateBoardWood(true);
   if (log || hadLog) renderFaces();  // a document without a log renders on modelChanged alone
 }
 
@@ -217,8 +232,6 @@ void MainWindow::renderBoardFaces() {
   const auto show = [this](const QVariant& faces) {
     renderings_ = faces.value<std::array<QImage, 6>>();
     updateFacesView();
-    viewport_->setFacePhotos(renderings_);
-    viewport_->setShowPhotos(true);
   };
   renderJob_ = jobs_->start(
       tr("Rendering board"),
@@ -240,6 +253,62 @@ void MainWindow::renderBoardFaces() {
         emit facesPreviewed();
       },
       false);
+}
+
+// The knot field (its noise tables take ~35 ms for the 108 knots of the spruce log, docs/performance.md)
+// is made in the background after a knot or parameter edit, the views keeping the previous field until
+// it is ready (latest wins); the field of another log (another stem) is made at once. A board move reuses
+// the field: only the views' knot grid is rebuilt.
+void MainWindow::updateBoardWood(bool logOrParameters) {
+  if (boardWoodJob_ && jobs_->isRunning(boardWoodJob_)) jobs_->cancel(boardWoodJob_);
+  boardWoodJob_ = 0;
+  const auto& log = document_->log();
+  const auto show = [this](std::shared_ptr<const KnotField> field,
+                           std::shared_ptr<const WoodColorMap> colors) {
+    auto wood = std::make_shared<BoardWood>();
+    wood->field = std::move(field);
+    wood->colors = std::move(colors);
+    wood->board = document_->log()->board;
+    boardWood_ = std::move(wood);
+    viewport_->setBoardWood(boardWood_);
+    cutView_->setBoardWood(boardWood_);
+  };
+  if (!log) {
+    boardWood_.reset();
+    viewport_->setBoardWood(nullptr);
+    cutView_->setBoardWood(nullptr);
+  } else if (!logOrParameters && boardWood_) {
+    show(boardWood_->field, boardWood_->colors);
+  } else {
+    const LogModel logModel = log->log;
+    const WoodParameters params = document_->project().params;
+    const auto make = [logModel, params] {
+      return std::make_pair(std::make_shared<const KnotField>(logModel, KnotSettings::fromParameters(params)),
+                            std::make_shared<const WoodColorMap>(logColorMap(logModel, params)));
+    };
+    // Another log (opened, or another document): at once, so no view shows the old log's wood.
+    const Stem& stem = log->log.stem;
+    const bool sameStem = boardWood_ && boardWood_->field->log().stem.heightStep == stem.heightStep &&
+                          boardWood_->field->log().stem.pith == stem.pith &&
+                          boardWood_->field->log().stem.radii == stem.radii;
+    if (!sameStem) {
+      const auto [field, colors] = make();
+      show(field, colors);
+      return;
+    }
+    show(boardWood_->field, boardWood_->colors);  // the board as it is now; the edited knots follow
+    boardWoodJob_ = jobs_->start(
+        tr("Knot field"),
+        [make](const Progress&, const JobRunner::Preview&) { return QVariant::fromValue(make()); },
+        [this, show](const QVariant& result) {
+          if (!document_->log()) return;
+          const auto made =
+              result
+                  .value<std::pair<std::shared_ptr<const KnotField>, std::shared_ptr<const WoodColorMap>>>();
+          show(made.first, made.second);
+        },
+        {}, false);
+  }
 }
 
 void MainWindow::addKnot() {

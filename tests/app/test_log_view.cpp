@@ -1,27 +1,34 @@
 // The editor with a log: a random log opens as a document, the board moves (dragged in the log view and
 // typed in the Board dock) and the faces follow, knots are added, edited and deleted as undo steps, and
-// the project (log and board) and the log alone are saved and read back. Saves a screenshot.
+// the project (log and board) and the log alone are saved and read back; the cut panel and the 3D view
+// show the log's wood with knots (GLSL), the same field as the faces, and follow the board and the cut.
+// Saves screenshots.
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
 
 #include "board_controls.hpp"
+#include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "gl/surface_format.hpp"
 #include "image_change.hpp"
+#include "image_pane.hpp"
 #include "io/log_data_import.hpp"
 #include "knot_table.hpp"
 #include "log_commands.hpp"
 #include "log_view.hpp"
 #include "main_window.hpp"
+#include "panel_controls.hpp"
+#include "render/board_wood.hpp"
 #include "viewport3d.hpp"
 #include "window_grab.hpp"
 
@@ -47,6 +54,8 @@ class TestLogView : public QObject {
   void addsEditsAndDeletesKnots();
   void savesAndReopensProjectWithLog();
   void closesLogAsUndoStep();
+  void cutAndThreeDShowTheLogsWood();
+  void showsPanelsFromTheLog();
   void savesScreenshot();
   void cleanupTestCase() { window_.reset(); }
 
@@ -94,7 +103,11 @@ void TestLogView::opensRandomLogAsDocument() {
   }
   QCOMPARE(window_->logView()->log()->knots.size(), log().log.knots.size());
   QCOMPARE(window_->knotTable()->table()->rowCount(), static_cast<int>(log().log.knots.size()));
-  QVERIFY(window_->viewport()->showPhotos());  // the 3D view shows the board's rendered faces
+  // The 3D view and the cut panel evaluate the board's wood (the knot model in GLSL), not photos.
+  QVERIFY(window_->viewport()->boardWood());
+  QVERIFY(!window_->viewport()->showPhotos());
+  QCOMPARE(window_->cutView()->boardWood(), window_->viewport()->boardWood());
+  QVERIFY(window_->viewport()->boardWood()->board == log().board);
   QCOMPARE(document()->undoStack()->count(), 0);
 }
 
@@ -224,6 +237,9 @@ void TestLogView::savesAndReopensProjectWithLog() {
   QCOMPARE(document()->undoStack()->count(), 0);
   QCOMPARE(window_->logView()->board().center, saved.board.center);
   QCOMPARE(document()->project().block.size(), saved.board.size);
+  // The 3D view and the cut panel show the reopened board at once.
+  QVERIFY(window_->viewport()->boardWood()->board == saved.board);
+  QVERIFY(window_->cutView()->boardWood()->board == saved.board);
 }
 
 void TestLogView::closesLogAsUndoStep() {
@@ -234,10 +250,170 @@ void TestLogView::closesLogAsUndoStep() {
   QVERIFY(!window_->logView()->log());
   QVERIFY(waitForFaces(rendered));
   QVERIFY(window_->facesView()->hasFaces());  // the block's own model
+  QVERIFY(!window_->viewport()->boardWood());
+  QVERIFY(!window_->cutView()->boardWood());
   document()->undoStack()->undo();
+  QVERIFY(window_->viewport()->boardWood());
   QVERIFY(document()->log().has_value());
   QVERIFY(log().board == before.board);
   QVERIFY(waitForFaces(rendered, 2));
+}
+
+namespace {
+
+// Both GL views drawn completely at full resolution, as they are now.
+QImage grabCut(CutView* cut) {
+  cut->setForcedRenderScale(1);
+  return cut->grabFramebuffer();
+}
+QImage grab3d(Viewport3D* viewport) {
+  viewport->refineNow();
+  return viewport->grabFramebuffer();
+}
+
+// changedShare over the wood of the cut panel only (inside the cut's outline).
+double changedShareOnCut(const QImage& a, const QImage& b, const CutView* cut) {
+  const QPolygonF outline = cut->cutOutline();
+  const QRect box = outline.boundingRect().toAlignedRect().intersected(a.rect());
+  int changed = 0, inside = 0;
+  for (int y = box.top(); y <= box.bottom(); ++y)
+    for (int x = box.left(); x <= box.right(); ++x) {
+      if (!outline.containsPoint(QPointF(x + 0.5, y + 0.5), Qt::OddEvenFill)) continue;
+      const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+      changed +=
+          std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q)) > 24;
+      ++inside;
+    }
+  return inside > 0 ? static_cast<double>(changed) / inside : 0.0;
+}
+
+}  // namespace
+
+void TestLogView::cutAndThreeDShowTheLogsWood() {
+  Viewport3D* viewport = window_->viewport();
+  CutView* cut = window_->cutView();
+  if (auto* dock = window_->findChild<QDockWidget*>("cutDock")) dock->raise();
+  QTest::qWait(50);
+  const std::shared_ptr<const BoardWood> wood = viewport->boardWood();
+  QVERIFY(wood);
+  QVERIFY(wood->board == log().board);
+  document()->setCutEnabled(true);
+  CutPlaneSetting setting;
+  setting.azimuthDeg = 30.0f, setting.elevationDeg = 25.0f, setting.offsetMm = 3.0f;
+  document()->editCutPlane(setting, true);
+  QVERIFY(viewport->cutEnabled());
+  QVERIFY(cut->plane().has_value());
+  cut->zoomToFit();
+  const QImage logCut = grabCut(cut), log3d = grab3d(viewport);
+  const QString dir = QStringLiteral(KERF_TEST_ARTIFACTS_DIR);
+  QVERIFY(QDir().mkpath(dir));
+  QVERIFY(logCut.save(dir + "/log_cut_panel.png"));
+  QVERIFY(log3d.save(dir + "/log_viewport3d.png"));
+
+  // The cut panel shows the board's field: its pixels are core's colours at the block points under them.
+  int samples = 0, close = 0;
+  double sum = 0;
+  for (int y = 4; y < cut->height(); y += 5)
+    for (int x = 3; x < cut->width(); x += 7) {
+      const QPointF at(x + 0.5, y + 0.5);
+      const auto p = cut->blockPointAt(at);
+      if (!p || cut->bottomRulerRect().contains(at) || cut->leftRulerRect().contains(at)) continue;
+      const glm::vec3 c = boardWoodColor(*wood, *p);
+      const QColor shown =
+          logCut.pixelColor(qRound(x * logCut.devicePixelRatio()), qRound(y * logCut.devicePixelRatio()));
+      const double d =
+          (std::abs(shown.redF() - c.x) + std::abs(shown.greenF() - c.y) + std::abs(shown.blueF() - c.z)) / 3;
+      sum += d;
+      close += d < 0.03;
+      ++samples;
+    }
+  qInfo("cut panel against core's board wood: %d samples, mean |difference| %.4f, %.1f %% within 0.03",
+        samples, sum / std::max(samples, 1), 100.0 * close / std::max(samples, 1));
+  QVERIFY(samples > 150);
+  QVERIFY(sum / samples < 0.02);
+  QVERIFY(close > 0.9 * samples);
+
+  // Not the block's procedural model: the same views without the board's wood look different.
+  viewport->setBoardWood(nullptr);
+  cut->setBoardWood(nullptr);
+  const QImage blockCut = grabCut(cut), block3d = grab3d(viewport);
+  viewport->setBoardWood(wood);
+  cut->setBoardWood(wood);
+  QVERIFY(blockCut.save(dir + "/log_cut_panel_block_model.png"));
+  const double cutVsBlock = changedShareOnCut(logCut, blockCut, cut),
+               viewVsBlock = changedShare(log3d, block3d);
+  qInfo("log wood against the block model: cut panel %.1f %%, 3D view %.1f %% of pixels differ",
+        100 * cutVsBlock, 100 * viewVsBlock);
+  QVERIFY(cutVsBlock > 0.3);
+  QVERIFY(viewVsBlock > 0.06);                          // the board covers about a quarter of the view
+  QVERIFY(changedShare(logCut, grabCut(cut)) < 0.001);  // and back
+
+  // Moving the cut plane and moving the board through the log change both views.
+  setting.offsetMm += 6.0f;
+  document()->editCutPlane(setting, true);
+  const QImage movedCut = grabCut(cut);
+  const double cutMoved = changedShareOnCut(logCut, movedCut, cut);
+  Board moved = log().board;
+  moved.center.z += 40.0f;
+  QSignalSpy facesRendered(window_.get(), &MainWindow::facesRendered);
+  document()->editBoard(moved, true);
+  QVERIFY(viewport->boardWood()->board == moved);
+  QCOMPARE(cut->boardWood(), viewport->boardWood());
+  QVERIFY(viewport->boardWood()->field == wood->field);  // a board move keeps the knot field
+  const QImage boardCut = grabCut(cut), board3d = grab3d(viewport);
+  QVERIFY(boardCut.save(dir + "/log_cut_panel_board_moved.png"));
+  const double boardMovedCut = changedShareOnCut(movedCut, boardCut, cut),
+               boardMoved3d = changedShare(log3d, board3d);
+  qInfo("cut moved 6 mm: %.1f %%; board moved 40 mm up the log: cut panel %.1f %%, 3D view %.1f %% changed",
+        100 * cutMoved, 100 * boardMovedCut, 100 * boardMoved3d);
+  QVERIFY(cutMoved > 0.2);
+  QVERIFY(boardMovedCut > 0.2);
+  QVERIFY(boardMoved3d > 0.06);
+  QVERIFY(waitForFaces(facesRendered));  // the window's picture with the faces of the moved board
+  QVERIFY(grabWindowWithGl(window_.get()).save(dir + "/log_mode_cut.png"));
+
+  cut->setForcedRenderScale(0);
+  document()->undoStack()->undo();  // the board
+  document()->undoStack()->undo();  // the second cut
+  document()->setCutEnabled(false);
+}
+
+// CLT, plywood and veneer of the open log in the Panel view: the pictures of kerf-cli render-panel.
+void TestLogView::showsPanelsFromTheLog() {
+  PanelControls* controls = window_->panelControls();
+  ImagePane* pane = window_->panelPane();
+  QVERIFY(controls && pane);
+  QSignalSpy rendered(window_.get(), &MainWindow::panelRendered);
+  struct Case {
+    PanelType type;
+    const char* caption;
+    double aspect;  // width / height of the picture
+  };
+  const Case cases[] = {{PanelType::Clt, "CLT panel, 3 layers, face A", 1.0},
+                        {PanelType::Plywood, "plywood, 5 plies, face A", 1.0},
+                        {PanelType::Veneer, "rotary-cut veneer", 2.0}};
+  QImage previous;
+  for (const Case& c : cases) {
+    controls->setType(c.type);
+    controls->showButton()->click();
+    const int count = static_cast<int>(rendered.count());
+    QVERIFY(QTest::qWaitFor([&] { return rendered.count() > count; }, kTimeoutMs));
+    const QImage image = pane->image();
+    QVERIFY(!image.isNull());
+    QVERIFY2(pane->caption().startsWith(c.caption), qPrintable(pane->caption()));
+    QCOMPARE(std::max(image.width(), image.height()), 1200);
+    QVERIFY(std::abs(double(image.width()) / image.height() - c.aspect) < 0.01);
+    if (!previous.isNull() && previous.size() == image.size()) QVERIFY(changedShare(previous, image) > 0.3);
+    previous = image;
+    QVERIFY(image.save(QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/log_panel_%1.png").arg(int(c.type))));
+  }
+  auto* dock = window_->findChild<QDockWidget*>("panelDock");
+  QVERIFY(dock && dock->isVisible());
+  if (auto* tabs = window_->findChild<QTabWidget*>("boardTabs")) tabs->setCurrentIndex(1);
+  QVERIFY(
+      grabWindowWithGl(window_.get()).save(QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/log_panel_window.png")));
+  if (auto* logViewDock = window_->findChild<QDockWidget*>("logViewDock")) logViewDock->raise();
+  if (auto* tabs = window_->findChild<QTabWidget*>("boardTabs")) tabs->setCurrentIndex(0);
 }
 
 void TestLogView::savesScreenshot() {

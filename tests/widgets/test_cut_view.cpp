@@ -12,8 +12,10 @@
 #include <memory>
 #include <numeric>
 
+#include "../core/spruce_log.hpp"
 #include "cut_view.hpp"
 #include "demo/demo_block.hpp"
+#include "render/board_wood.hpp"
 #include "render/renderers.hpp"
 
 using namespace kerf;
@@ -54,6 +56,7 @@ class TestCutView : public QObject {
   void cursorPosition();
   void reducedResolutionWhileStreaming();
   void frameTimes();
+  void logModeFrameTimes();
   void screenshots();
 
  private:
@@ -367,6 +370,44 @@ void TestCutView::frameTimes() {
     }
   }
   view_->setForcedRenderScale(0);
+}
+
+// The cut through a board in log mode (shaders/board_wood.glsl): the spruce log where shared/data has it,
+// else a random log; the cut filling the view.
+void TestCutView::logModeFrameTimes() {
+  const LogModel* gran = kerf::testing::granLog();
+  const LogModel log = gran ? *gran : generateRandomLog({.seed = 7});
+  const WoodColorMap colors =
+      gran ? gran->colorMap : woodColorMapFromParameters(WoodParameters{}, log.stem.maxRadius());
+  const Board board = defaultBoard(log);
+  Project project;
+  project.block = Block(board.size);
+  view_->setModel(std::make_shared<const WoodModel>(project));
+  view_->setBoardWood(
+      std::make_shared<const BoardWood>(BoardWood{std::make_shared<const KnotField>(log, KnotSettings{}),
+                                                  std::make_shared<const WoodColorMap>(colors), board}));
+  view_->resize(800, 600);
+  view_->setCutPlane({2.0f, 25.0f, 30.0f});
+  view_->zoomToFit();
+  QTest::qWait(50);
+  for (int scale : {1, 2, 3}) {
+    view_->setForcedRenderScale(scale);
+    std::vector<double> gpu;
+    QImage image;
+    for (int i = 0; i < 7; ++i) {
+      image = view_->grabFramebuffer();
+      gpu.push_back(view_->lastFrameMs());
+    }
+    if (scale == 1) QVERIFY(image.save(kArtifacts + "/cut_view_log_mode.png"));
+    qInfo().noquote()
+        << QString("log mode (%1, default board), fit, 800x600 scale 1/%2: wood %3 ms (median of 7)")
+               .arg(gran ? "spruce log Gran_1" : "random log 7")
+               .arg(scale)
+               .arg(median(gpu), 0, 'f', 1);
+  }
+  view_->setForcedRenderScale(0);
+  view_->setBoardWood(nullptr);
+  view_->setModel(model_);
 }
 
 void TestCutView::screenshots() {

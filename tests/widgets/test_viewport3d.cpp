@@ -2,6 +2,7 @@
 // OpenGL context (Mesa under xvfb-run): the picture, the cut, dragging the cut plane, snapping, the
 // reduced-resolution frames while interacting, the face photos, and frame times (printed).
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalSpy>
@@ -14,10 +15,12 @@
 #include <memory>
 #include <vector>
 
+#include "../core/spruce_log.hpp"
 #include "cut_gizmo.hpp"
 #include "demo/demo_block.hpp"
 #include "orbit_camera.hpp"
 #include "qt_image.hpp"
+#include "render/board_wood.hpp"
 #include "render/renderers.hpp"
 #include "viewport3d.hpp"
 
@@ -639,7 +642,66 @@ class Viewport3DTest : public QObject {
   }
 
   // Frame times at 1280 x 800 (printed for docs/performance.md).
-  void frameTimes() {
+  void frameTimes() { measureFrameTimes("demo block"); }
+
+  // The same in log mode: the board of a random log, its knot model evaluated per fragment
+  // (shaders/board_wood.glsl), the knots culled per cell of the board's grid.
+  void logModeFrameTimes() {
+    const LogModel log = generateRandomLog({.seed = 7});
+    measureLogMode(log, woodColorMapFromParameters(WoodParameters{}, log.stem.maxRadius()), "random log 7");
+  }
+
+  // The CT-measured spruce log (108 knots, 16 of them reach the default board), where shared/data has it.
+  void spruceLogFrameTimes() {
+    const LogModel* gran = kerf::testing::granLog();
+    if (!gran) QSKIP("the spruce log (shared/data/logs/spruce-gran1) is absent");
+    measureLogMode(*gran, gran->colorMap, "spruce log Gran_1");
+  }
+
+ private:
+  void measureLogMode(const LogModel& log, const WoodColorMap& colors, const QString& name) {
+    const Board board = defaultBoard(log);
+    // What the editor does on the GUI thread for a knot edit (the field) and a board move (the grid).
+    QElapsedTimer clock;
+    clock.start();
+    auto field = std::make_shared<const KnotField>(log, KnotSettings{});
+    const double fieldMs = clock.nsecsElapsed() * 1e-6;
+    clock.restart();
+    const KnotCellGrid grid = buildKnotCellGrid(*field, board, knotGridCells(board.size));
+    const double gridMs = clock.nsecsElapsed() * 1e-6;
+    const auto wood = std::make_shared<const BoardWood>(
+        BoardWood{std::move(field), std::make_shared<const WoodColorMap>(colors), board});
+    Project project;
+    project.block = Block(board.size);
+    view_->setModel(std::make_shared<const WoodModel>(project));
+    view_->setBoardWood(wood);
+    view_->resize(1280, 800);
+    view_->resetCamera();
+    clock.restart();
+    // The first frame uploads the log's tables (and, the view's first time in log mode, builds the program).
+    const QImage picture = view_->grabFramebuffer();
+    const double firstMs = clock.nsecsElapsed() * 1e-6;
+    QVERIFY(picture.save(artifact("log_mode_" + QString(name).replace(' ', '_'))));
+    const glm::vec3 centre = rgbAt(picture, picture.width() / 2, picture.height() / 2);
+    QVERIFY2(looksLikeWood(centre), "the board should show wood at the view's centre");
+    qInfo().noquote() << QString(
+                             "%1: %2 knots, %3 can reach the board, %4 cells, %5 knots per cell; "
+                             "knot field %6 ms, grid %7 ms, first frame %8 ms")
+                             .arg(name)
+                             .arg(log.knots.size())
+                             .arg(grid.boardKnots)
+                             .arg(grid.ranges.size())
+                             .arg(grid.meanKnotsPerCell(), 0, 'f', 2)
+                             .arg(fieldMs, 0, 'f', 1)
+                             .arg(gridMs, 0, 'f', 1)
+                             .arg(firstMs, 0, 'f', 1);
+    measureFrameTimes("log mode, default board of the " + name);
+    view_->setBoardWood(nullptr);
+    view_->setModel(model_);
+  }
+
+  void measureFrameTimes(const QString& what) {
+    qInfo().noquote() << "frame times:" << what;
     view_->resize(1280, 800);
     QTest::qWait(50);
     view_->setCutEnabled(false);
@@ -714,7 +776,6 @@ class Viewport3DTest : public QObject {
     disconnect(view_.get(), &Viewport3D::frameRendered, this, nullptr);
   }
 
- private:
   Project project_;
   std::shared_ptr<const WoodModel> model_;
   std::unique_ptr<Viewport3D> view_;

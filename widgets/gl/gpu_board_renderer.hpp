@@ -13,6 +13,8 @@ class QOpenGLShaderProgram;
 
 namespace kerf {
 
+class KnotTables;
+
 struct GpuBoardTimings {
   double cull = 0;      // per-board and per-tile culling on the CPU, s
   double upload = 0;    // textures and uniforms, s
@@ -35,8 +37,9 @@ class GpuBoardRenderer {
 
  private:
   std::unique_ptr<QOpenGLShaderProgram> program_;
+  std::unique_ptr<KnotTables> tables_;
   unsigned vertexArray_ = 0;
-  unsigned textures_[8] = {};
+  unsigned tilesTexture_ = 0;  // RG32I, tilesX x tilesY: (first, count) into the knot list
 };
 
 }  // namespace kerf

@@ -6,6 +6,7 @@
 #include <QVector3D>
 #include <cmath>
 
+#include "gl/board_wood_textures.hpp"
 #include "gl/gl_helpers.hpp"
 #include "gl/wood_program.hpp"
 #include "util/error.hpp"
@@ -21,8 +22,9 @@ GpuImageRenderer::~GpuImageRenderer() {
   if (QOpenGLContext::currentContext()) currentGl()->glDeleteVertexArrays(1, &vertexArray_);
 }
 
-Image GpuImageRenderer::draw(const WoodModel& model, glm::vec3 origin, glm::vec3 pixelRight,
-                             glm::vec3 pixelDown, glm::ivec2 size, int faceIndex, bool clip, int channels) {
+Image GpuImageRenderer::draw(const WoodModel* model, const BoardWood* board, glm::vec3 origin,
+                             glm::vec3 pixelRight, glm::vec3 pixelDown, glm::ivec2 size, int faceIndex,
+                             bool clip, int channels) {
   QOpenGLFramebufferObjectFormat format;
   format.setInternalTextureFormat(0x8814);  // GL_RGBA32F: no 8-bit rounding before the comparison
   QOpenGLFramebufferObject fbo(size.x, size.y, format);
@@ -31,15 +33,22 @@ Image GpuImageRenderer::draw(const WoodModel& model, glm::vec3 origin, glm::vec3
   f->glViewport(0, 0, size.x, size.y);
   f->glDisable(GL_BLEND);
   f->glDisable(GL_DEPTH_TEST);
-  QOpenGLShaderProgram& program = program_->program();
+  WoodProgram& wood = board ? *boardProgram_ : *program_;
+  QOpenGLShaderProgram& program = wood.program();
   program.bind();
-  program_->setModel(model);
+  if (board) {
+    boardTextures_->upload(*board, 0);
+    boardTextures_->bind(program, 1);
+  } else {
+    wood.setModel(*model);
+  }
   program.setUniformValue("u_planeOrigin", toQt(origin));
   program.setUniformValue("u_pixelRight", toQt(pixelRight));
   program.setUniformValue("u_pixelDown", toQt(pixelDown));
   program.setUniformValue("u_imageHeight", static_cast<float>(size.y));
   program.setUniformValue("u_faceIndex", faceIndex);
-  program.setUniformValue("u_blockHalfSize", toQt(model.block().halfSize()));
+  program.setUniformValue("u_blockHalfSize",
+                          toQt(board ? board->board.block().halfSize() : model->block().halfSize()));
   program.setUniformValue("u_clipToBlock", clip);
   f->glBindVertexArray(vertexArray_);
   f->glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -62,17 +71,30 @@ Image GpuImageRenderer::renderFace(const WoodModel& model, FaceId face, glm::ive
   const glm::vec3 origin = block.imageToBlock(face, {0, 0}, size);
   const glm::vec3 right = block.imageToBlock(face, {1, 0}, size) - origin;
   const glm::vec3 down = block.imageToBlock(face, {0, 1}, size) - origin;
-  return draw(model, origin, right, down, size, faceIndex(face), false, 3);
+  return draw(&model, nullptr, origin, right, down, size, faceIndex(face), false, 3);
 }
 
 Image GpuImageRenderer::renderCut(const WoodModel& model, const CutPlane& plane, float pxPerMm) {
-  const auto bounds = plane.boundsInBlock(model.block());
+  return drawCut(&model, nullptr, model.block(), plane, pxPerMm);
+}
+
+Image GpuImageRenderer::renderBoardCut(const BoardWood& wood, const CutPlane& plane, float pxPerMm) {
+  if (!boardProgram_) {
+    boardProgram_ = std::make_unique<WoodProgram>("image_plane.vert", "image_plane.frag", WoodSource::Board);
+    boardTextures_ = std::make_unique<BoardWoodTextures>();
+  }
+  return drawCut(nullptr, &wood, wood.board.block(), plane, pxPerMm);
+}
+
+Image GpuImageRenderer::drawCut(const WoodModel* model, const BoardWood* board, const Block& block,
+                                const CutPlane& plane, float pxPerMm) {
+  const auto bounds = plane.boundsInBlock(block);
   if (!bounds) throw InputError("the cut plane does not pass through the block");
   const glm::vec2 extent = bounds->max - bounds->min;
   const glm::ivec2 size(std::max(1, static_cast<int>(std::ceil(extent.x * pxPerMm - 1e-3f))),
                         std::max(1, static_cast<int>(std::ceil(extent.y * pxPerMm - 1e-3f))));
   const glm::vec3 origin = plane.toBlock({bounds->min.x, bounds->max.y});  // same layout as core's renderCut
-  return draw(model, origin, plane.right() / pxPerMm, -plane.up() / pxPerMm, size, -1, true, 4);
+  return draw(model, board, origin, plane.right() / pxPerMm, -plane.up() / pxPerMm, size, -1, true, 4);
 }
 
 }  // namespace kerf

@@ -25,15 +25,18 @@ QString WoodProgram::shaderFile(const QString& name) {
   return QString::fromUtf8(file.readAll());
 }
 
-QString WoodProgram::fragmentSource(const QString& fragmentFile) {
-  return "#version 330 core\n" + QString::fromStdString(glslUniformDeclarations()) +
-         shaderFile("wood_model.glsl") + "\n#line 1 1\n" + shaderFile(fragmentFile);
+QString WoodProgram::fragmentSource(const QString& fragmentFile, WoodSource source) {
+  QString text = "#version 330 core\n";
+  if (source == WoodSource::Board) text += "#define KERF_BOARD_WOOD 1\n";
+  text += QString::fromStdString(glslUniformDeclarations()) + shaderFile("wood_model.glsl");
+  if (source == WoodSource::Board) text += shaderFile("knots.glsl") + shaderFile("board_wood.glsl");
+  return text + "\n#line 1 1\n" + shaderFile(fragmentFile);
 }
 
-WoodProgram::WoodProgram(const QString& vertexFile, const QString& fragmentFile) {
+WoodProgram::WoodProgram(const QString& vertexFile, const QString& fragmentFile, WoodSource source) {
   const QString vertex = "#version 330 core\n" + shaderFile(vertexFile);
   if (!program_.addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
-      !program_.addShaderFromSourceCode(QOpenGLShader::Fragment, fragmentSource(fragmentFile)) ||
+      !program_.addShaderFromSourceCode(QOpenGLShader::Fragment, fragmentSource(fragmentFile, source)) ||
       !program_.link()) {
     throw std::runtime_error("wood shader failed to build: " + program_.log().toStdString());
   }

@@ -15,11 +15,15 @@ namespace kerf {
 // ignored on the GPU.
 inline constexpr int kMaxBlockKnotsOnGpu = 8;
 
+// Which wood the fragment stage evaluates: the block's procedural model (evaluateWood), or a board cut
+// from a log with knots (boardWood of shaders/board_wood.glsl, set up by BoardWoodTextures).
+enum class WoodSource { Block, Board };
+
 class WoodProgram {
  public:
   // Compiles `vertexFile` and `fragmentFile` (names in the :/shaders resource) with the wood model
   // linked into the fragment stage. Throws std::runtime_error with the compiler log on failure.
-  WoodProgram(const QString& vertexFile, const QString& fragmentFile);
+  WoodProgram(const QString& vertexFile, const QString& fragmentFile, WoodSource source = WoodSource::Block);
   ~WoodProgram();
 
   QOpenGLShaderProgram& program() { return program_; }
@@ -29,7 +33,7 @@ class WoodProgram {
   void setModel(const WoodModel& model);
 
   // The full fragment-stage source, as compiled (for tests and error messages).
-  static QString fragmentSource(const QString& fragmentFile);
+  static QString fragmentSource(const QString& fragmentFile, WoodSource source = WoodSource::Block);
   static QString shaderFile(const QString& name);
 
  private:
