@@ -3,6 +3,8 @@
 // against core's renderBoardCut, on slanted cuts through boards of seeded random logs and, where
 // shared/data has it, of the CT-measured spruce log.
 #include <QGuiApplication>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
@@ -109,6 +111,11 @@ class BoardCutParityTest : public QObject, kerf::testing::GlRendererFixture<GpuI
     constexpr float kPxPerMm = 3.0f;
     const Image cpu = renderBoardCut(wood, plane, kPxPerMm);
     const Image gpu = renderer_->renderBoardCut(wood, plane, kPxPerMm);
+    // The table uploads leave the unpack alignment as they found it (the default): QPainter's glyph
+    // uploads rely on it, and the cut panel's rulers came out garbled when it stayed at 1.
+    GLint alignment = 0;
+    QOpenGLContext::currentContext()->functions()->glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    QCOMPARE(alignment, 4);
     QCOMPARE(gpu.width, cpu.width);
     QCOMPARE(gpu.height, cpu.height);
     const QString dir = QStringLiteral(KERF_TEST_ARTIFACTS);

@@ -35,7 +35,7 @@ void BoardWoodTextures::upload(const BoardWood& wood, int unit) {
   QOpenGLExtraFunctions* f = currentGl();
   f->glActiveTexture(GL_TEXTURE0 + unit);
   f->glBindTexture(GL_TEXTURE_3D, cellsTexture_);
-  f->glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const PackedRowsUpload packed;
   f->glTexImage3D(GL_TEXTURE_3D, 0, GL_RG32I, grid_.cells.x, grid_.cells.y, grid_.cells.z, 0, GL_RG_INTEGER,
                   GL_INT, grid_.ranges.data());
   f->glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);

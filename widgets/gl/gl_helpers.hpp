@@ -16,4 +16,21 @@ inline QOpenGLExtraFunctions* currentGl() {
   return QOpenGLContext::currentContext()->extraFunctions();
 }
 
+// Tightly packed rows (GL_UNPACK_ALIGNMENT 1) while it lives, then the alignment as it was. QPainter's
+// OpenGL engine uploads its glyphs with the default alignment and does not set it itself: text drawn
+// after a table upload that left it at 1 came out garbled.
+class PackedRowsUpload {
+ public:
+  PackedRowsUpload() {
+    currentGl()->glGetIntegerv(GL_UNPACK_ALIGNMENT, &previous_);
+    currentGl()->glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  }
+  ~PackedRowsUpload() { currentGl()->glPixelStorei(GL_UNPACK_ALIGNMENT, previous_); }
+  PackedRowsUpload(const PackedRowsUpload&) = delete;
+  PackedRowsUpload& operator=(const PackedRowsUpload&) = delete;
+
+ private:
+  GLint previous_ = 4;
+};
+
 }  // namespace kerf

@@ -37,7 +37,7 @@ void uploadTexelTable(unsigned texture, int unit, int internalFormat, int width,
   }
   f->glActiveTexture(GL_TEXTURE0 + unit);
   f->glBindTexture(GL_TEXTURE_2D, texture);
-  f->glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const PackedRowsUpload packed;
   f->glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, data);
   f->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   f->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
