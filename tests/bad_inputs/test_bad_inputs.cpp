@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <regex>
 
 #include "bad_input_files.hpp"
@@ -80,6 +82,18 @@ const std::string kGoodLog =
 fs::path logFile(const fs::path& dir, const std::string& json) {
   writeText(dir / "bad.kerflog", json);
   return dir / "bad.kerflog";
+}
+
+// A ring-localization image: bright rings every `spacing` px around `centre` (in pixels, may be off the
+// image).
+Image ringImage(int px, glm::vec2 centre, float spacing) {
+  Image image(px, px, 1);
+  for (int y = 0; y < px; ++y)
+    for (int x = 0; x < px; ++x) {
+      const float r = glm::length(glm::vec2(x + 0.5f, y + 0.5f) - centre);
+      image.pixel(x, y)[0] = std::pow(0.5f * (std::cos(6.2831853f * r / spacing) + 1.0f), 10.0f);
+    }
+  return image;
 }
 
 void openDocument(const fs::path& p) {
@@ -320,6 +334,23 @@ const BadInput kCatalogue[] = {
      },
      [](const fs::path& p) { openLog(p.parent_path()); }, "knot count must be a whole number from 0 to",
      "render-board {dir} --out {out}/board.png --res 64"},
+    // --- ring contours and fits ---
+    {"FitWithAnEmptyContourSet",
+     [](const fs::path& d) {
+       writeSample(d);
+       for (const char* face : {"A", "B", "C", "D", "E", "F"})
+         writeImage(d / (std::string(face) + "_arl.png"), Image(16, 16, 1));
+       return d;
+     },
+     nullptr, "no ring contours to fit", "fit {dir} --out {out}/fit.kerf --ignore-anatomy"},
+    {"FitWithAllContoursOnOneFace",
+     [](const fs::path& d) {
+       writeSample(d);
+       writeImage(d / "A_arl.png", ringImage(128, {-40.0f, 60.0f}, 12.0f));
+       return d;
+     },
+     nullptr, "fewer than two rings found along the fitted pith axis",
+     "fit {dir} --out {out}/fit.kerf --ignore-anatomy"},
     // --- outputs ---
     {"OutputFolderMissing", [](const fs::path& d) { return d / "no-such-folder"; }, nullptr,
      "folder .*no-such-folder does not exist", "export {dir}/../demo.kerf --face A --out {file}/A.png"},
