@@ -95,8 +95,13 @@ Command addFitCommand(CLI::App& app) {
             options.pithOnly = o->pithOnly;
             options.useAnatomy = !o->ignoreAnatomy;
             options.anatomyWeight = o->anatomyWeight;
-            const GrowthFieldFitResult fit =
-                fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());
+            const GrowthFieldFitResult fit = [&] {
+              try {
+                return fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());
+              } catch (const InputError& e) {  // the fit knows no file names: say which sample failed
+                throw InputError(std::string(e.what()) + " (fitting " + sample.string() + ")");
+              }
+            }();
             for (FaceId face : kAllFaces)
               if (!files[faceIndex(face)].empty())
                 std::printf("face %c: %d contours from %s\n", faceLetter(face),

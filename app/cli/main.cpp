@@ -2,7 +2,9 @@
 // and exits non-zero on bad input; --stats prints timing, throughput and peak memory. Each subcommand
 // lives in its own file (see command.hpp).
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <new>
 
 #include "command.hpp"
 #include "util/error.hpp"
@@ -49,6 +51,13 @@ int main(int argc, char** argv) {
   } catch (const std::filesystem::filesystem_error& e) {
     std::fprintf(stderr, "kerf-cli: error: %s\n", e.what());
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "kerf-cli: error: out of memory (is an input much larger than expected?)\n");
+    return 3;
+  } catch (const std::exception& e) {
+    // A bug, not bad input: say so rather than abort with std::terminate's message.
+    std::fprintf(stderr, "kerf-cli: internal error: %s (please report it with the input)\n", e.what());
+    return 3;
   }
   return 0;
 }

@@ -94,6 +94,7 @@ DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOption
     throw InputError(s.str());
   }
   std::error_code error;
+  const bool folderExisted = std::filesystem::exists(folder);
   std::filesystem::create_directories(folder, error);
   if (error) throw InputError("cannot create the folder " + folder.string() + ": " + error.message());
 
@@ -103,21 +104,31 @@ DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOption
   csv << "index,file,depth_mm\n";
   json << "{\"face\":\"" << faceLetter(options.face) << "\",\"px_per_mm\":" << options.pxPerMm
        << ",\"layer\":\"" << imageLayerName(options.layer) << "\",\"images\":[";
-  for (int i = 0; i < count; ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "%c_%03d.png", faceLetter(options.face), i);
-    const LayeredImage image =
-        renderFaceAtDepth(model, options.face, result.depthsMm[i], options.pxPerMm, options.samples,
-                          progress.part(double(i) / count, double(i + 1) / count));
-    writeLayeredImage(folder / name, image, write);
-    result.files.push_back(folder / name);
-    csv << i << "," << name << "," << result.depthsMm[i] << "\n";
-    json << (i ? "," : "") << "{\"file\":\"" << name << "\",\"depth_mm\":" << result.depthsMm[i] << "}";
+  // A stack is written whole or not at all: a cancelled or failed export removes the images it wrote
+  // (and the folder it made), so no stack without its index is left behind.
+  try {
+    for (int i = 0; i < count; ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "%c_%03d.png", faceLetter(options.face), i);
+      const LayeredImage image =
+          renderFaceAtDepth(model, options.face, result.depthsMm[i], options.pxPerMm, options.samples,
+                            progress.part(double(i) / count, double(i + 1) / count));
+      writeLayeredImage(folder / name, image, write);
+      result.files.push_back(folder / name);
+      csv << i << "," << name << "," << result.depthsMm[i] << "\n";
+      json << (i ? "," : "") << "{\"file\":\"" << name << "\",\"depth_mm\":" << result.depthsMm[i] << "}";
+    }
+    json << "]}\n";
+    writeTextAtomically(folder / "depths.json", json.str());
+    result.index = folder / "depths.csv";
+    writeTextAtomically(result.index, csv.str());
+  } catch (...) {
+    std::error_code ignored;
+    for (const std::filesystem::path& file : result.files) std::filesystem::remove(file, ignored);
+    std::filesystem::remove(folder / "depths.json", ignored);
+    if (!folderExisted) std::filesystem::remove(folder, ignored);  // only when empty
+    throw;
   }
-  json << "]}\n";
-  writeTextAtomically(folder / "depths.json", json.str());
-  result.index = folder / "depths.csv";
-  writeTextAtomically(result.index, csv.str());
   return result;
 }
 

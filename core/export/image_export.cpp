@@ -275,6 +275,7 @@ void writeLayeredImage(const std::filesystem::path& path, const LayeredImage& im
     } else {
       writeTiff(path, temporary, image, options.extraLayers);
     }
+    verifyWrittenImage(temporary, path);
   });
 }
 

@@ -194,8 +194,14 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
 
   // Anatomical prior (fit/anatomy_prior.hpp): the fibre direction from the face photos' texture.
   const Stopwatch anatomyClock;
-  if (std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); }))
-    report.anatomy = estimateFibreDirection(input.photos, block);
+  if (std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); })) {
+    // The prior is optional: photos too small or too plain to show the fibres leave the fit without it
+    // (the report then has no "anatomy:" line) instead of refusing a sample whose rings are fine.
+    try {
+      report.anatomy = estimateFibreDirection(input.photos, block);
+    } catch (const InputError&) {
+    }
+  }
   report.anatomySeconds = anatomyClock.seconds();
   PithFitOptions pithOptions;
   pithOptions.principal = options.principal;

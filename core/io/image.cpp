@@ -13,7 +13,11 @@ namespace {
 
 std::unique_ptr<OIIO::ImageInput> openInput(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw InputError("image not found: " + path.string());
-  auto in = OIIO::ImageInput::open(path.string());
+  // Kerf drops alpha, so it wants the colour as stored: without this hint OpenImageIO multiplies it by
+  // alpha, and transparent parts of a PNG photo would read as black.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path.string(), &config);
   if (!in) {
     throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());
   }
@@ -33,6 +37,17 @@ Image readImage(const std::filesystem::path& path, bool keepChannels) {
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     throw InputError("image " + path.string() + " is empty");
+  }
+  const long long pixelCount = static_cast<long long>(spec.width) * spec.height;
+  if (pixelCount > kMaxImagePixels) {
+    throw InputError("image " + path.string() + " is " + std::to_string(spec.width) + " x " +
+                     std::to_string(spec.height) + " pixels; Kerf reads images up to " +
+                     std::to_string(kMaxImagePixels / 1'000'000) +
+                     " megapixels. Scale the photo down first.");
+  }
+  if (spec.nchannels > 16) {
+    throw InputError("image " + path.string() + " has " + std::to_string(spec.nchannels) +
+                     " channels; Kerf reads grey, RGB and RGBA images");
   }
   Image raw(spec.width, spec.height, spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.pixels.data())) {
@@ -61,7 +76,24 @@ void writeImage(const std::filesystem::path& path, const Image& image, int bits)
         !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close()) {
       throw InputError("cannot write " + path.string() + ": " + out->geterror());
     }
+    verifyWrittenImage(temporary, path);
   });
+}
+
+void verifyWrittenImage(const std::filesystem::path& written, const std::filesystem::path& target) {
+  auto in = OIIO::ImageInput::open(written.string());
+  bool complete = static_cast<bool>(in);
+  std::vector<unsigned char> pixels;
+  for (int subimage = 0; complete && in->seek_subimage(subimage, 0); ++subimage) {
+    const OIIO::ImageSpec& spec = in->spec();
+    pixels.resize(spec.image_bytes());
+    complete = in->read_image(subimage, 0, 0, spec.nchannels, spec.format, pixels.data());
+  }
+  if (!complete) {
+    if (in) (void)in->geterror();  // taken, so OpenImageIO does not print it again
+    throw InputError("cannot write " + target.string() +
+                     ": the file could not be written completely (is the disk full?)");
+  }
 }
 
 ImageDifference compareImages(const Image& a, const Image& b, float tolerance) {

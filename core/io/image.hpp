@@ -23,6 +23,11 @@ struct Image {
   bool empty() const { return pixels.empty(); }
 };
 
+// The largest image Kerf decodes: 120 megapixels (a 100 MP camera's photo; about 1.4 GB as float RGB).
+// Larger files are refused from their header, before any pixel memory is taken, so a photo that claims
+// 20000 x 20000 pixels (or a corrupt header) cannot exhaust memory. readImageSize does not apply it.
+inline constexpr long long kMaxImagePixels = 120'000'000;
+
 // Reads any format OpenImageIO knows; converts to float 0..1 with 3 channels (grey is replicated,
 // alpha dropped) unless keepChannels. Throws InputError with a message naming the file.
 Image readImage(const std::filesystem::path& path, bool keepChannels = false);
@@ -32,6 +37,11 @@ glm::ivec2 readImageSize(const std::filesystem::path& path);
 // Writes the image (format from the extension; 8 bits per channel unless bits = 16), atomically:
 // a temporary file in the same folder is renamed over the target. Throws InputError.
 void writeImage(const std::filesystem::path& path, const Image& image, int bits = 8);
+
+// Reads back every subimage of an image file just written to `written` (before it replaces `target`):
+// libpng and libtiff, as OpenImageIO drives them, do not report a failed write (a full disk, a quota),
+// so a truncated file would otherwise replace a good one. Throws InputError naming `target`.
+void verifyWrittenImage(const std::filesystem::path& written, const std::filesystem::path& target);
 
 // Mean absolute difference per channel value, and the share of pixels whose largest channel
 // difference exceeds `pixelTolerance`. Sizes must match (throws InputError otherwise).

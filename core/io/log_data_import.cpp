@@ -30,7 +30,7 @@ json readJsonFile(const fs::path& path) {
   if (!in) throw InputError("cannot open log file " + path.string());
   try {
     return json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse errors, and numbers too large for a double (1e999)
     throw InputError("log file " + path.string() + " is not valid JSON: " + e.what());
   }
 }
@@ -40,6 +40,24 @@ float number(const json& v, const std::string& what) {
   const double d = v.get<double>();
   if (!std::isfinite(d)) throw InputError(what + " must be finite");
   return static_cast<float>(d);
+}
+
+// A count (slices, azimuths, knots): a whole number in [lo, hi], checked before any conversion to int.
+int count(const json& v, const std::string& what, int lo, int hi) {
+  const float n = number(v, what);
+  if (!(n >= static_cast<float>(lo) && n <= static_cast<float>(hi)) || n != std::floor(n)) {
+    throw InputError(what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+  }
+  return static_cast<int>(n);
+}
+
+// validate(log) names no file; the readers add theirs.
+void validateFrom(const LogModel& log, const std::string& where) {
+  try {
+    validate(log);
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
 }
 
 const json& array(const json& v, const std::string& what, std::size_t minSize = 0) {
@@ -167,7 +185,7 @@ LogModel importGranJson(const fs::path& folder, const LogImportOptions& options)
     knot.deathDistance = I;
     log.knots.push_back(std::move(knot));
   }
-  validate(log);
+  validateFrom(log, "log folder " + folder.string());
   return log;
 }
 
@@ -179,8 +197,9 @@ LogModel importGranMaps(const fs::path& folder) {
   const float rmin = number(params[0], paramsPath.string() + " rmin"),
               rmax = number(params[1], paramsPath.string() + " rmax"),
               hmax = number(params[2], paramsPath.string() + " hmax");
-  const int count = static_cast<int>(number(params[3], paramsPath.string() + " knot count"));
-  if (!(rmin > 0.0f) || !(rmax > rmin) || !(hmax > 0.0f) || count < 0) {
+  // At most one knot per 4 rows of a knot map that OpenImageIO could read.
+  const int count = kerf::count(params[3], paramsPath.string() + " knot count", 0, 1 << 24);
+  if (!(rmin > 0.0f) || !(rmax > rmin) || !(hmax > 0.0f)) {
     throw InputError(paramsPath.string() + " must hold [rmin > 0, rmax > rmin, hmax > 0, knots >= 0]");
   }
   LogModel log;
@@ -246,7 +265,7 @@ LogModel importGranMaps(const fs::path& folder) {
     knot.endDistance = std::numeric_limits<float>::infinity();  // not encoded in the maps
     log.knots.push_back(std::move(knot));
   }
-  validate(log);
+  validateFrom(log, "log folder " + folder.string());
   return log;
 }
 
@@ -323,7 +342,7 @@ void saveLogFile(const LogModel& log, const fs::path& path) {
 }
 
 LogModel logFromJson(const json& in, const std::string& where) {
-  if (!in.is_object() || in.value("format", "") != kLogFormat) {
+  if (!in.is_object() || !in.contains("format") || in["format"] != kLogFormat) {
     throw InputError(where + " is not a Kerf log (missing \"format\": \"kerf-log\")");
   }
   if (!in.contains("version") || !in["version"].is_number_integer())
@@ -335,11 +354,13 @@ LogModel logFromJson(const json& in, const std::string& where) {
   }
   if (version < 1) throw InputError(where + ": unknown log format version " + std::to_string(version));
   LogModel log;
-  log.name = in.value("name", "");
+  const json name = in.value("name", json(""));
+  if (!name.is_string()) throw InputError(where + ": \"name\" must be a string");
+  log.name = name.get<std::string>();
   if (!in.contains("stem") || !in["stem"].is_object()) throw InputError(where + " has no \"stem\" object");
   const json& stem = in["stem"];
   log.stem.heightStep = number(stem.value("height_step_mm", json()), where + ": stem.height_step_mm");
-  log.stem.azimuths = static_cast<int>(number(stem.value("azimuths", json()), where + ": stem.azimuths"));
+  log.stem.azimuths = count(stem.value("azimuths", json()), where + ": stem.azimuths", 3, 1 << 20);
   const json pith = stem.value("pith_mm", json());
   for (const json& p : array(pith, where + ": stem.pith_mm", 2)) {
     const json& xy = array(p, where + ": stem.pith_mm entry", 2);
@@ -367,7 +388,7 @@ LogModel logFromJson(const json& in, const std::string& where) {
                                        number(rgb[2], where + ": colour"));
     }
   }
-  validate(log);
+  validateFrom(log, where);
   return log;
 }
 

@@ -37,6 +37,13 @@ json writeVec3(glm::vec3 v) {
   return json::array({v.x, v.y, v.z});
 }
 
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
+std::string jsonProblem(const json::exception& e) {
+  const std::string what = e.what();
+  const auto end = what.find("] ");
+  return end == std::string::npos ? what : what.substr(end + 2);
+}
+
 }  // namespace
 
 json parametersToJson(const WoodParameters& params) {
@@ -144,7 +151,7 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
 }
 
 Project projectFromJson(const json& in, const fs::path& baseDir) {
-  if (!in.is_object() || in.value("format", "") != kProjectFormatName) {
+  if (!in.is_object() || !in.contains("format") || in["format"] != kProjectFormatName) {
     throw InputError("not a Kerf project (missing \"format\": \"kerf-project\")");
   }
   if (!in.contains("version") || !in["version"].is_number_integer()) {
@@ -194,7 +201,9 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
     setting.azimuthDeg = readNumber(cut.value("azimuth_deg", json(0.0)), "view.cut_plane.azimuth_deg");
     setting.elevationDeg = readNumber(cut.value("elevation_deg", json(0.0)), "view.cut_plane.elevation_deg");
     project.cutPlane = setting;
-    project.cutEnabled = cut.value("enabled", false);
+    const json enabled = cut.value("enabled", json(false));
+    if (!enabled.is_boolean()) throw InputError("view.cut_plane.enabled must be true or false");
+    project.cutEnabled = enabled.get<bool>();
   }
   return project;
 }
@@ -206,12 +215,17 @@ Project loadProject(const fs::path& file) {
   try {
     in = json::parse(stream);
   } catch (const json::parse_error& e) {
-    throw InputError("project " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) + ")");
+    throw InputError("project " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) +
+                     "): " + jsonProblem(e));
+  } catch (const json::exception& e) {  // e.g. a number too large for a double (1e999)
+    throw InputError("project " + file.string() + " is not valid JSON: " + jsonProblem(e));
   }
   try {
     return projectFromJson(in, fs::absolute(file).parent_path());
   } catch (const InputError& e) {
     throw InputError("project " + file.string() + ": " + e.what());
+  } catch (const json::exception& e) {  // a value of the wrong type that a reader did not check itself
+    throw InputError("project " + file.string() + ": a value has the wrong type (" + jsonProblem(e) + ")");
   }
 }
 

@@ -62,7 +62,7 @@ WoodParameters Preset::applyTo(const WoodParameters& base) const {
 }
 
 Preset presetFromJson(const json& in) {
-  if (!in.is_object() || in.value("format", "") != kPresetFormatName) {
+  if (!in.is_object() || !in.contains("format") || in["format"] != kPresetFormatName) {
     throw InputError(std::string("not a Kerf preset (missing \"format\": \"") + kPresetFormatName + "\")");
   }
   if (!in.contains("version") || !in["version"].is_number_integer()) {
@@ -125,12 +125,16 @@ Preset loadPreset(const fs::path& file) {
     in = json::parse(stream);
   } catch (const json::parse_error& e) {
     throw InputError("preset " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) + ")");
+  } catch (const json::exception& e) {  // e.g. a number too large for a double (1e999)
+    throw InputError("preset " + file.string() + " is not valid JSON: " + e.what());
   }
   Preset preset;
   try {
     preset = presetFromJson(in);
   } catch (const InputError& e) {
     throw InputError("preset " + file.string() + ": " + e.what());
+  } catch (const json::exception& e) {
+    throw InputError("preset " + file.string() + ": a value has the wrong type (" + e.what() + ")");
   }
   if (preset.id != file.stem().string()) {
     throw InputError("preset " + file.string() + ": its id \"" + preset.id + "\" must match the file name");

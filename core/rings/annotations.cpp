@@ -535,7 +535,16 @@ Annotations readMokumeAnnotations(const MokumeAnnotationFiles& files, const Bloc
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
     if (!files.rings[i].empty()) {
-      auto traces = ringTracesFromImage(readGrayImage8(files.rings[i]), face, block);
+      const GrayImage8 image = readGrayImage8(files.rings[i]);
+      // Ring lines are thin strokes on a background of 255. Without one, every pixel becomes a ring of
+      // its value and the "traces" are the skeleton of the whole face: an inverted or unrelated image.
+      const auto background = std::count(image.pixels.begin(), image.pixels.end(), std::uint8_t{255});
+      if (2 * static_cast<std::size_t>(background) < image.pixels.size()) {
+        throw InputError(files.rings[i].string() + " has no background: " +
+                         std::to_string(100 * background / std::max<std::size_t>(1, image.pixels.size())) +
+                         " % of its pixels are 255, but a ring image holds thin lines (the year) on 255");
+      }
+      auto traces = ringTracesFromImage(image, face, block);
       out.traces.insert(out.traces.end(), traces.begin(), traces.end());
     }
     if (!files.knots[i].empty()) {

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (CMakePresets.json, preset "fuzz": clang, ASan+UBSan, core only) and runs
+# each for KERF_FUZZ_SECONDS (default 300) on one core, niced. docs/reliability.md has the numbers.
+#
+#   bash scripts/fuzz.sh                    # every target
+#   bash scripts/fuzz.sh fuzz_project       # one target
+#
+# Seeds: fuzz/corpus/<target>/ (checked in, small), the CLI tests' projects and the demo block's output
+# (made here by kerf-cli). New corpus entries go to build/fuzz/corpus/<target>/, crashes to
+# build/fuzz/crashes/; keep a crasher as a regression test in tests/bad_inputs/test_fuzz_regressions.cpp.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${KERF_FUZZ_SECONDS:-300}"
+all=(fuzz_project fuzz_sample_folder fuzz_mokume_images fuzz_contours fuzz_log_json fuzz_log_maps)
+[ $# -gt 0 ] && targets=("$@") || targets=("${all[@]}")
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake --preset fuzz "${launcher[@]}" >/dev/null
+nice -n 19 cmake --build build/fuzz -j 2 --target "${targets[@]}" kerf-cli
+
+corpus=build/fuzz/corpus
+mkdir -p build/fuzz/crashes build/fuzz/logs
+for t in "${all[@]}"; do mkdir -p "$corpus/$t"; done
+cp tests/cli/*.kerf "$corpus/fuzz_project/"
+if [ ! -f build/fuzz/demo/demo.kerf ]; then
+  build/fuzz/app/kerf-cli -q demo --out build/fuzz/demo --size 24 --samples 1 >/dev/null
+  build/fuzz/app/kerf-cli -q demo --out build/fuzz/demo-knot --size 24 --samples 1 --knot >/dev/null
+fi
+cp build/fuzz/demo/demo.kerf "$corpus/fuzz_project/demo.kerf"
+cp build/fuzz/demo-knot/demo.kerf "$corpus/fuzz_project/demo-knot.kerf"
+
+export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
+export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1"
+for t in "${targets[@]}"; do
+  echo "== $t: $seconds s"
+  seeds=()
+  [ -d "fuzz/corpus/$t" ] && seeds=("fuzz/corpus/$t")
+  nice -n 19 "build/fuzz/fuzz/$t" "$corpus/$t" "${seeds[@]}" -max_total_time="$seconds" -timeout=20 \
+    -rss_limit_mb=2560 -print_final_stats=1 -artifact_prefix="build/fuzz/crashes/$t-" \
+    >"build/fuzz/logs/$t.log" 2>&1 || echo "   $t stopped with a finding: see build/fuzz/logs/$t.log"
+  grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/logs/$t.log" | sed 's/^/   /'
+done

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Builds Kerf with AddressSanitizer + UndefinedBehaviorSanitizer (CMakePresets.json, preset "asan") and runs
+# the test suite under them; any report fails the test that triggered it (docs/reliability.md).
+#
+#   bash scripts/test-sanitizers.sh            # everything: core, CLI and GUI tests
+#   bash scripts/test-sanitizers.sh -R '^cli'  # extra arguments go to ctest
+#
+# KERF_SAN_TARGETS="kerf-cli test_core" builds only those targets (then run a matching -R pattern).
+# The build is niced: it is meant to run beside other work on a shared machine.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root="$PWD"
+
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+jobs="${KERF_SAN_JOBS:-$(nproc)}"
+cmake --preset asan "${launcher[@]}" >/dev/null
+# shellcheck disable=SC2086  # the target list is meant to split
+nice -n 19 cmake --build build/asan -j "$jobs" ${KERF_SAN_TARGETS:+--target $KERF_SAN_TARGETS}
+
+# halt_on_error/abort_on_error: the first report ends the process with SIGABRT, which ctest and the CLI
+# cases' run_case.cmake count as a crash, even in cases that expect kerf-cli to fail.
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
+cd build/asan
+nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 "$@"

@@ -1,0 +1,122 @@
+// Cancelling every kind of long core job at random moments (catalogue in docs/reliability.md): the job
+// either finishes or throws Cancelled, never anything else; a cancelled export leaves neither its file nor
+// a temporary one behind; a finished one leaves a complete file.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <random>
+#include <stop_token>
+#include <thread>
+
+#include "../core/ring_image_fixture.hpp"
+#include "bad_input_files.hpp"
+#include "export/export_job.hpp"
+#include "field/growth_field.hpp"
+#include "fit/growth_field_fit.hpp"
+#include "io/project.hpp"
+#include "render/wood_model.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+namespace {
+
+// Runs `job` with a stop request after `delay` (from another thread); true when it was cancelled.
+bool runCancelledAfter(std::chrono::microseconds delay, const std::function<void(const Progress&)>& job) {
+  std::stop_source source;
+  Progress progress;
+  progress.stop = source.get_token();
+  std::jthread canceller([&] {
+    std::this_thread::sleep_for(delay);
+    source.request_stop();
+  });
+  try {
+    job(progress);
+  } catch (const Cancelled&) {
+    return true;
+  }
+  return false;
+}
+
+// Random moments spread over the job's usual length, plus cancelling before it starts.
+std::vector<std::chrono::microseconds> moments(std::chrono::microseconds length, int count) {
+  std::mt19937 random(8);
+  std::uniform_int_distribution<long> pick(0, length.count());
+  std::vector<std::chrono::microseconds> out{0us};
+  for (int i = 1; i < count; ++i) out.emplace_back(pick(random));
+  return out;
+}
+
+std::chrono::microseconds timeOf(const std::function<void(const Progress&)>& job) {
+  const auto start = std::chrono::steady_clock::now();
+  job(Progress{});
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
+}
+
+void cancelExportAtRandomMoments(const std::string& name, ExportRequest request) {
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "cancel_jobs" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  request.out = dir / request.out;
+  const WoodModel model{Project()};
+  const auto job = [&](const Progress& p) { runExport(model, request, p); };
+  const auto length = timeOf(job);
+  int cancelled = 0;
+  for (const auto delay : moments(length, 12)) {
+    fs::remove_all(request.out);
+    if (runCancelledAfter(delay, job)) {
+      ++cancelled;
+      EXPECT_FALSE(fs::exists(request.out)) << "a cancelled export left " << request.out;
+    } else {
+      EXPECT_TRUE(fs::exists(request.out));
+    }
+    for (const auto& entry : fs::directory_iterator(dir))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+  EXPECT_GE(cancelled, 1) << "no moment hit the running job (it took " << length.count() << " us)";
+}
+
+}  // namespace
+
+TEST(CancelJobs, ImageExport) {
+  ExportRequest request;
+  request.out = "A.tif";
+  request.face = FaceId::A;
+  request.pxPerMm = 6.0f;
+  cancelExportAtRandomMoments("image", request);
+}
+
+TEST(CancelJobs, VolumeExport) {
+  ExportRequest request;
+  request.out = "growth.nrrd";
+  request.resolution = 48;
+  cancelExportAtRandomMoments("volume", request);
+}
+
+TEST(CancelJobs, DepthStackExport) {
+  ExportRequest request;
+  request.out = "stack";
+  request.pxPerMm = 3.0f;
+  request.depthStack = DepthStackOptions{FaceId::B, 1.0f, 4.0f, 3.0f, 1};
+  cancelExportAtRandomMoments("depth_stack", request);
+}
+
+TEST(CancelJobs, GrowthFieldFit) {
+  const Block block;
+  const PithAxis truth = PithAxis::fromAngles({8, 0, -45}, 6, 30);
+  GrowthFieldFitInput input;
+  const GrowthField field(truth, 3.0f, GrowthRates::uniform(block, truth));
+  for (FaceId f : kAllFaces)
+    input.rings[faceIndex(f)] = kerf::testing::renderRingImage(field, block, f, 96, 0.3f);
+  GrowthFieldFitOptions options;
+  options.pithOnly = true;
+  const auto job = [&](const Progress& p) {
+    (void)fitGrowthFieldToSample(input, block, WoodParameters{}, options, p);
+  };
+  const auto length = timeOf(job);
+  int cancelled = 0;
+  for (const auto delay : moments(length, 8)) cancelled += runCancelledAfter(delay, job) ? 1 : 0;
+  EXPECT_GE(cancelled, 1) << "the fit took " << length.count() << " us";
+}

@@ -1,0 +1,58 @@
+// Inputs found by the fuzz targets (fuzz/, docs/reliability.md) that crashed or misbehaved before their
+// fix. Each is opened as the fuzz target does; the only acceptable outcome is a value or an InputError.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "bad_input_files.hpp"
+#include "io/log_data_import.hpp"
+#include "io/project.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The message of the InputError, or "" when the input was accepted; anything else fails the test.
+std::string outcomeOf(const std::function<void()>& open) {
+  try {
+    open();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+fs::path scratchFile(const std::string& name, const std::string& bytes) {
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "fuzz_regressions";
+  fs::create_directories(dir);
+  kerf::bad::writeText(dir / name, bytes);
+  return dir / name;
+}
+
+}  // namespace
+
+// Project files: values of the wrong type reached nlohmann's get<>() and escaped as json::type_error,
+// which kerf-cli did not catch (std::terminate).
+TEST(FuzzRegressions, ProjectValuesOfTheWrongType) {
+  for (const std::string text :
+       {R"({"format": 5, "version": 1})",
+        R"({"format": "kerf-project", "version": 1, "view": {"cut_plane": {"enabled": 1}}})",
+        R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": 1e400}})"}) {
+    const fs::path file = scratchFile("wrong_type.kerf", text);
+    EXPECT_NE(outcomeOf([&] { loadProject(file); }).find("wrong_type.kerf"), std::string::npos) << text;
+  }
+}
+
+// Log files: a count far beyond int (UBSan: float-cast-overflow), a name that is no string.
+TEST(FuzzRegressions, LogCountsAndNames) {
+  for (const std::string text :
+       {R"({"format": "kerf-log", "version": 1, "stem": {"height_step_mm": 1, "azimuths": 1e30}})",
+        R"({"format": "kerf-log", "version": 1, "name": [], "stem": {}})"}) {
+    EXPECT_NE(
+        outcomeOf([&] { logFromJson(nlohmann::json::parse(text), "fuzz.kerflog"); }).find("fuzz.kerflog"),
+        std::string::npos)
+        << text;
+  }
+}

@@ -1,0 +1,124 @@
+// Outputs that cannot be written (catalogue in docs/reliability.md): a full disk, a folder that does not
+// exist or is a file. The message names the file; the file that was there before is unchanged (saves are
+// atomic) and no temporary file is left. A full disk is simulated with RLIMIT_FSIZE, which makes writes
+// past the limit fail with EFBIG as ENOSPC would (the tests run as root, so permissions cannot be used).
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
+#include <random>
+
+#include "bad_input_files.hpp"
+#include "io/image.hpp"
+#include "io/project.hpp"
+#include "util/error.hpp"
+
+using namespace kerf;
+using namespace kerf::bad;
+
+namespace {
+
+class FullDisk {
+ public:
+  explicit FullDisk(rlim_t bytes) {
+    ::getrlimit(RLIMIT_FSIZE, &saved_);
+    previous_ = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit = saved_;
+    limit.rlim_cur = bytes;
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  }
+  ~FullDisk() {
+    ::setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, previous_);
+  }
+
+ private:
+  rlimit saved_{};
+  void (*previous_)(int) = SIG_DFL;
+};
+
+fs::path folder(const std::string& name) {
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "output_failures" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::size_t filesIn(const fs::path& dir) {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+}
+
+std::string errorOf(const std::function<void()>& write) {
+  try {
+    write();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(OutputFailures, FullDiskKeepsThePreviousProject) {
+  const fs::path dir = folder("full_disk_project");
+  const fs::path file = dir / "work.kerf";
+  saveProject(Project(), file);
+  const std::string before = readBytes(file);
+  Project bigger;
+  for (int i = 0; i < 200; ++i) bigger.annotations.traces.push_back({FaceId::A, {{1, 1}, {2, 2}, {3, 3}}, i});
+  std::string message;
+  {
+    const FullDisk full(before.size() + 100);
+    message = errorOf([&] { saveProject(bigger, file); });
+  }
+  EXPECT_NE(message.find("cannot write " + file.string() + " (disk full?)"), std::string::npos) << message;
+  EXPECT_EQ(readBytes(file), before);
+  EXPECT_EQ(filesIn(dir), 1u) << "a temporary file was left";
+}
+
+// Every image format Kerf writes: libtiff, for one, does not report a failed write, so the file is read
+// back before it replaces the target (io/image.cpp).
+TEST(OutputFailures, FullDiskImageWrite) {
+  for (const char* extension : {".png", ".tif", ".exr"}) {
+    const fs::path dir = folder(std::string("full_disk_image") + extension);
+    const fs::path file = dir / (std::string("face") + extension);
+    Image noisy(256, 256, 3);
+    std::mt19937 random(3);  // noise: no format compresses it below the limit
+    for (float& v : noisy.pixels) v = std::uniform_real_distribution<float>(0, 1)(random);
+    std::string message;
+    {
+      const FullDisk full(4096);
+      message = errorOf([&] { writeImage(file, noisy); });
+    }
+    EXPECT_NE(message.find("cannot write " + file.string()), std::string::npos) << extension << ": " << message;
+    EXPECT_EQ(filesIn(dir), 0u) << extension;
+  }
+}
+
+TEST(OutputFailures, FolderThatIsAFile) {
+  const fs::path dir = folder("folder_is_a_file");
+  writeText(dir / "notes.txt", "not a folder");
+  const std::string message = errorOf([&] { saveProject(Project(), dir / "notes.txt" / "work.kerf"); });
+  EXPECT_NE(message.find("cannot write " + (dir / "notes.txt" / "work.kerf").string()), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+}
+
+TEST(OutputFailures, CliReportsAFullDisk) {
+  const fs::path dir = folder("full_disk_cli");
+  saveProject(Project(), dir / "demo.kerf");
+  const std::string command = "trap \"\" XFSZ; ulimit -f 4; " + std::string(KERF_CLI) + " -q export " +
+                              (dir / "demo.kerf").string() + " --face A --px-per-mm 8 --out " +
+                              (dir / "A.tif").string() + " 2>&1";
+  FILE* pipe = ::popen(("bash -c '" + command + "'").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  const int status = ::pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << output;
+  EXPECT_NE(output.find("kerf-cli: error: cannot write " + (dir / "A.tif").string()), std::string::npos)
+      << output;
+  EXPECT_FALSE(fs::exists(dir / "A.tif"));
+  EXPECT_EQ(filesIn(dir), 1u) << "a temporary file was left";
+}
