@@ -7,7 +7,7 @@
 #
 # Seeds: fuzz/corpus/<target>/ (checked in, small), the CLI tests' projects and the demo block's output
 # (made here by kerf-cli). New corpus entries go to build/fuzz/corpus/<target>/, crashes to
-# build/fuzz/crashes/; keep a crasher as a regression test in tests/bad_inputs/test_fuzz_regressions.cpp.
+# build/fuzz/crashes/; keep a crasher as a regression test in tests/bad_inputs/test_parser_regressions.cpp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${KERF_FUZZ_SECONDS:-300}"
