@@ -26,6 +26,18 @@ std::unique_ptr<OIIO::ImageInput> openInput(const std::filesystem::path& path) {
   return in;
 }
 
+// A PNG cut short (an interrupted copy) has no IEND chunk near its end. Refusing it here gives a clear
+// message, and keeps it away from libpng's error path, where OpenImageIO leaks its message string.
+void checkPngComplete(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : 0;
+  const std::streamoff tail = std::min<std::streamoff>(size, 65536);
+  std::string bytes(static_cast<std::size_t>(tail), '\0');
+  if (!in.seekg(size - tail) || !in.read(bytes.data(), tail) || bytes.find("IEND") == std::string::npos) {
+    throw InputError("cannot decode image " + path.string() + ": the PNG file is truncated (it has no end)");
+  }
+}
+
 }  // namespace
 
 glm::ivec2 readImageSize(const std::filesystem::path& path) {
@@ -51,6 +63,7 @@ Image readImage(const std::filesystem::path& path, bool keepChannels) {
     throw InputError("image " + path.string() + " has " + std::to_string(spec.nchannels) +
                      " channels; Kerf reads grey, RGB and RGBA images");
   }
+  if (std::string(in->format_name()) == "png") checkPngComplete(path);
   Image raw(spec.width, spec.height, spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.pixels.data())) {
     throw InputError("cannot decode image " + path.string() + ": " + in->geterror());
