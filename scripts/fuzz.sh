@@ -40,7 +40,7 @@ for t in "${targets[@]}"; do
   echo "== $t: $seconds s"
   seeds=()
   [ -d "fuzz/corpus/$t" ] && seeds=("fuzz/corpus/$t")
-  nice -n 19 "build/fuzz/fuzz/$t" "$corpus/$t" "${seeds[@]}" -max_total_time="$seconds" -max_len=4096 -timeout=20 \
+  nice -n 19 "build/fuzz/fuzz/$t" "$corpus/$t" "${seeds[@]}" -max_total_time="$seconds" -max_len=4096 -len_control=0 -timeout=20 \
     -rss_limit_mb=2560 -print_final_stats=1 -artifact_prefix="build/fuzz/crashes/$t-" \
     >"build/fuzz/logs/$t.log" 2>&1 || echo "   $t stopped with a finding: see build/fuzz/logs/$t.log"
   grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/logs/$t.log" | sed 's/^/   /'
