@@ -28,4 +28,8 @@ export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:check_initi
 export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 cd build/asan
-nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 "$@"
+# The --gpu board tests leak in the Mesa driver, which is unloaded before LeakSanitizer can name it
+# (docs/reliability.md); they are skipped unless KERF_SAN_GPU=1.
+exclude=()
+[ "${KERF_SAN_GPU:-0}" = 1 ] || exclude=(-E '_gpu')
+nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 "${exclude[@]}" "$@"
