@@ -7,7 +7,7 @@
 #
 # Seeds: fuzz/corpus/<target>/ (checked in, small), the CLI tests' projects and the demo block's output
 # (made here by kerf-cli). New corpus entries go to build/fuzz/corpus/<target>/, crashes to
-# build/fuzz/crashes/; keep a crasher as a regression test in tests/bad_inputs/test_fuzz_regressions.cpp.
+# build/fuzz/crashes/; keep a crasher as a regression test in tests/bad_inputs/test_parser_regressions.cpp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${KERF_FUZZ_SECONDS:-300}"
@@ -17,15 +17,19 @@ all=(fuzz_project fuzz_sample_folder fuzz_mokume_images fuzz_contours fuzz_log_j
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake --preset fuzz "${launcher[@]}" >/dev/null
-nice -n 19 cmake --build build/fuzz -j 2 --target "${targets[@]}" kerf-cli
+# kerf-cli makes the demo seeds; KERF_CLI=path/to/kerf-cli uses one already built instead.
+cli="${KERF_CLI:-build/fuzz/app/kerf-cli}"
+extra=()
+[ -z "${KERF_CLI:-}" ] && extra=(kerf-cli)
+nice -n 19 cmake --build build/fuzz -j 2 --target "${targets[@]}" "${extra[@]}"
 
 corpus=build/fuzz/corpus
 mkdir -p build/fuzz/crashes build/fuzz/logs
 for t in "${all[@]}"; do mkdir -p "$corpus/$t"; done
 cp tests/cli/*.kerf "$corpus/fuzz_project/"
 if [ ! -f build/fuzz/demo/demo.kerf ]; then
-  build/fuzz/app/kerf-cli -q demo --out build/fuzz/demo --size 24 --samples 1 >/dev/null
-  build/fuzz/app/kerf-cli -q demo --out build/fuzz/demo-knot --size 24 --samples 1 --knot >/dev/null
+  "$cli" -q demo --out build/fuzz/demo --size 24 --samples 1 >/dev/null
+  "$cli" -q demo --out build/fuzz/demo-knot --size 24 --samples 1 --knot >/dev/null
 fi
 cp build/fuzz/demo/demo.kerf "$corpus/fuzz_project/demo.kerf"
 cp build/fuzz/demo-knot/demo.kerf "$corpus/fuzz_project/demo-knot.kerf"
@@ -36,7 +40,7 @@ for t in "${targets[@]}"; do
   echo "== $t: $seconds s"
   seeds=()
   [ -d "fuzz/corpus/$t" ] && seeds=("fuzz/corpus/$t")
-  nice -n 19 "build/fuzz/fuzz/$t" "$corpus/$t" "${seeds[@]}" -max_total_time="$seconds" -timeout=20 \
+  nice -n 19 "build/fuzz/fuzz/$t" "$corpus/$t" "${seeds[@]}" -max_total_time="$seconds" -max_len=4096 -len_control=0 -timeout=20 \
     -rss_limit_mb=2560 -print_final_stats=1 -artifact_prefix="build/fuzz/crashes/$t-" \
     >"build/fuzz/logs/$t.log" 2>&1 || echo "   $t stopped with a finding: see build/fuzz/logs/$t.log"
   grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb" "build/fuzz/logs/$t.log" | sed 's/^/   /'

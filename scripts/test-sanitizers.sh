@@ -22,8 +22,14 @@ nice -n 19 cmake --build build/asan -j "$jobs" ${KERF_SAN_TARGETS:+--target $KER
 
 # halt_on_error/abort_on_error: the first report ends the process with SIGABRT, which ctest and the CLI
 # cases' run_case.cmake count as a crash, even in cases that expect kerf-cli to fail.
-export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=1"
+# No strict_string_checks: it flags libxkbcommon-x11's legal strndup of an unterminated buffer (Qt's xcb
+# platform, kerf-cli render-board --gpu) as a heap overflow.
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:check_initialization_order=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 cd build/asan
-nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 "$@"
+# The --gpu board tests leak in the Mesa driver, which is unloaded before LeakSanitizer can name it
+# (docs/reliability.md); they are skipped unless KERF_SAN_GPU=1.
+exclude=()
+[ "${KERF_SAN_GPU:-0}" = 1 ] || exclude=(-E '_gpu')
+nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 "${exclude[@]}" "$@"

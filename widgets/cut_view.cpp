@@ -91,6 +91,9 @@ CutView::CutView(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 CutView::~CutView() {
+  // ~QOpenGLWidget destroys the context after this destructor: its aboutToBeDestroyed must not call
+  // cleanupGL on what is by then no longer a CutView (UBSan: vptr).
+  if (context()) disconnect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &CutView::cleanupGL);
   cleanupGL();
 }
 

@@ -66,6 +66,8 @@ Viewport3D::Viewport3D(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 Viewport3D::~Viewport3D() {
+  // As in CutView: the context outlives this destructor, so its signal must not reach releaseGl.
+  if (context()) disconnect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport3D::releaseGl);
   releaseGl();
 }
 

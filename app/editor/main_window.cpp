@@ -65,6 +65,9 @@ MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(p
 MainWindow::~MainWindow() {
   jobs_->cancelAll();
   jobs_->waitForDone();
+  // The document is deleted with the children, after this destructor; its last signals (the undo stack
+  // turning clean) must not reach this window's slots by then (UBSan: vptr).
+  document_->disconnect(this);
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());

@@ -38,9 +38,9 @@ glm::ivec2 readImageSize(const std::filesystem::path& path);
 // a temporary file in the same folder is renamed over the target. Throws InputError.
 void writeImage(const std::filesystem::path& path, const Image& image, int bits = 8);
 
-// Reads back every subimage of an image file just written to `written` (before it replaces `target`):
-// libpng and libtiff, as OpenImageIO drives them, do not report a failed write (a full disk, a quota),
-// so a truncated file would otherwise replace a good one. Throws InputError naming `target`.
+// Checks that an image file just written to `written` is complete before it replaces `target`: libpng,
+// as OpenImageIO drives it, does not report a failed write (a full disk, a quota), so a truncated PNG
+// would otherwise replace a good file. Throws InputError naming `target`.
 void verifyWrittenImage(const std::filesystem::path& written, const std::filesystem::path& target);
 
 // Mean absolute difference per channel value, and the share of pixels whose largest channel

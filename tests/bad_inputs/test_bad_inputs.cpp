@@ -125,7 +125,7 @@ const BadInput kCatalogue[] = {
          return s / "A_col.png";
        });
      },
-     openImage, "cannot decode image|cannot read image", kDetect},
+     openImage, "cannot decode image .*A_col.png: the PNG file is truncated", kDetect},
     {"PhotoCorruptPng",
      [](const fs::path& d) {
        return sampleWith(d, [](const fs::path& s) {

@@ -76,8 +76,8 @@ TEST(OutputFailures, FullDiskKeepsThePreviousProject) {
   EXPECT_EQ(filesIn(dir), 1u) << "a temporary file was left";
 }
 
-// Every image format Kerf writes: libtiff, for one, does not report a failed write, so the file is read
-// back before it replaces the target (io/image.cpp).
+// Every image format Kerf writes. libpng, as OpenImageIO drives it, does not report a failed write, so a
+// PNG is checked for its end before it replaces the target (verifyWrittenImage, io/image.cpp).
 TEST(OutputFailures, FullDiskImageWrite) {
   for (const char* extension : {".png", ".tif", ".exr"}) {
     const fs::path dir = folder(std::string("full_disk_image") + extension);

@@ -1,5 +1,6 @@
-// Inputs found by the fuzz targets (fuzz/, docs/reliability.md) that crashed or misbehaved before their
-// fix. Each is opened as the fuzz target does; the only acceptable outcome is a value or an InputError.
+// Inputs that crashed the readers or were undefined behaviour before their fix (found while building the
+// catalogue; the fuzz targets in fuzz/ check the same rule, docs/reliability.md). Each is read as the fuzz
+// targets read it; the only acceptable outcome is a value or an InputError naming the file.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -25,7 +26,7 @@ std::string outcomeOf(const std::function<void()>& open) {
 }
 
 fs::path scratchFile(const std::string& name, const std::string& bytes) {
-  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "fuzz_regressions";
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "parser_regressions";
   fs::create_directories(dir);
   kerf::bad::writeText(dir / name, bytes);
   return dir / name;
@@ -35,7 +36,7 @@ fs::path scratchFile(const std::string& name, const std::string& bytes) {
 
 // Project files: values of the wrong type reached nlohmann's get<>() and escaped as json::type_error,
 // which kerf-cli did not catch (std::terminate).
-TEST(FuzzRegressions, ProjectValuesOfTheWrongType) {
+TEST(ParserRegressions, ProjectValuesOfTheWrongType) {
   for (const std::string text :
        {R"({"format": 5, "version": 1})",
         R"({"format": "kerf-project", "version": 1, "view": {"cut_plane": {"enabled": 1}}})",
@@ -46,12 +47,12 @@ TEST(FuzzRegressions, ProjectValuesOfTheWrongType) {
 }
 
 // Log files: a count far beyond int (UBSan: float-cast-overflow), a name that is no string.
-TEST(FuzzRegressions, LogCountsAndNames) {
+TEST(ParserRegressions, LogCountsAndNames) {
   for (const std::string text :
        {R"({"format": "kerf-log", "version": 1, "stem": {"height_step_mm": 1, "azimuths": 1e30}})",
         R"({"format": "kerf-log", "version": 1, "name": [], "stem": {}})"}) {
     EXPECT_NE(
-        outcomeOf([&] { logFromJson(nlohmann::json::parse(text), "fuzz.kerflog"); }).find("fuzz.kerflog"),
+        outcomeOf([&] { logFromJson(nlohmann::json::parse(text), "bad.kerflog"); }).find("bad.kerflog"),
         std::string::npos)
         << text;
   }
