@@ -7,7 +7,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include "demo/demo_block.hpp"
+#include "demo_window.hpp"
 #include "document.hpp"
 #include "export/image_export.hpp"
 #include "export_dialog.hpp"
@@ -41,17 +41,8 @@ void TestExportDialog::initTestCase() {
   QVERIFY(dir_.isValid());
   qputenv("KERF_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
   QCoreApplication::setOrganizationName("KerfTestExport");  // never the user's settings
-  DemoOptions options;
-  options.facePixels = 48;
-  options.samples = 1;
-  const QString project =
-      QString::fromStdString(writeDemo(dir_.filePath("demo").toStdString(), options).project.string());
-  window_ = std::make_unique<MainWindow>(RenderSettings{1.2f, 1});
-  window_->setAskBeforeDiscarding(false);
-  window_->show();
-  QSignalSpy ready(window_.get(), &MainWindow::documentReady);
-  window_->openDocument(project);
-  QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+  window_ = kerf::testing::openDemoWindow(dir_.filePath("demo"), 48, {}, kTimeoutMs);
+  QVERIFY(window_);
   for (int k = 0; k < 4; ++k) QVERIFY(window_->exportAction(static_cast<ExportDialog::Kind>(k)));
 }
 

@@ -8,7 +8,7 @@
 #include <QtTest>
 #include <fstream>
 
-#include "demo/demo_block.hpp"
+#include "demo_window.hpp"
 #include "image_change.hpp"
 #include "io/image.hpp"
 #include "main_window.hpp"
@@ -38,18 +38,8 @@ class TestPartExportDialog : public QObject {
     QVERIFY(dir_.isValid());
     qputenv("KERF_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
     QCoreApplication::setOrganizationName("KerfTestPartExport");  // never the user's settings
-    DemoOptions options;
-    options.facePixels = 48;
-    options.samples = 1;
-    const QString project =
-        QString::fromStdString(writeDemo(dir_.filePath("demo").toStdString(), options).project.string());
-    window_ = std::make_unique<MainWindow>(RenderSettings{1.2f, 1});
-    window_->setAskBeforeDiscarding(false);
-    window_->resize(1400, 900);
-    window_->show();
-    QSignalSpy ready(window_.get(), &MainWindow::documentReady);
-    window_->openDocument(project);
-    QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
+    window_ = kerf::testing::openDemoWindow(dir_.filePath("demo"), 48, {1400, 900}, kTimeoutMs);
+    QVERIFY(window_);
   }
 
   void placeCheckFitAndExport() {

@@ -14,7 +14,7 @@
 #include <QtTest>
 #include <algorithm>
 
-#include "demo/demo_block.hpp"
+#include "demo_window.hpp"
 #include "document.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
@@ -83,20 +83,7 @@ void TestResponsiveness::initTestCase() {
 }
 
 std::unique_ptr<MainWindow> TestResponsiveness::openDemo(const QString& name) {
-  DemoOptions options;
-  options.facePixels = 128;
-  options.samples = 1;
-  const QString project =
-      QString::fromStdString(writeDemo(dir_.filePath(name).toStdString(), options).project.string());
-  auto window = std::make_unique<MainWindow>(RenderSettings{3.2f, 1});
-  window->setAskBeforeDiscarding(false);
-  window->resize(1280, 800);
-  window->show();
-  if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;
-  QSignalSpy ready(window.get(), &MainWindow::documentReady);
-  window->openDocument(project);
-  if (!QTest::qWaitFor([&] { return ready.count() > 0; }, kTimeoutMs)) return nullptr;
-  return window;
+  return kerf::testing::openDemoWindow(dir_.filePath(name), 128, {1280, 800}, kTimeoutMs);
 }
 
 void TestResponsiveness::fitAndExportKeepTheEventLoopResponsive() {
