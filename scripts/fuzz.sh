@@ -14,6 +14,11 @@ seconds="${KERF_FUZZ_SECONDS:-300}"
 all=(fuzz_project fuzz_sample_folder fuzz_mokume_images fuzz_contours fuzz_log_json fuzz_log_maps)
 [ $# -gt 0 ] && targets=("$@") || targets=("${all[@]}")
 
+if ! command -v clang++ >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then
+  echo "fuzz.sh: libFuzzer needs clang and its runtime: apt-get install clang libclang-rt-14-dev" >&2
+  exit 2
+fi
+
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake --preset fuzz "${launcher[@]}" >/dev/null
