@@ -14,6 +14,7 @@
 #include "io/image.hpp"
 #include "util/error.hpp"
 #include "util/number_list.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf::cli {
 namespace {
@@ -95,8 +96,9 @@ Command addRectifyCommand(CLI::App& app) {
         const glm::vec2 resolution = photoResolution(setup.corners, faceMm, setup.rotationDegrees);
         float pxPerMm = o->pxPerMm;
         if (pxPerMm == 0) pxPerMm = std::clamp(std::floor(resolution.x * 10.0f) / 10.0f, 1.0f, 20.0f);
-        const glm::ivec2 size(std::max(1, static_cast<int>(std::lround(faceMm.x * pxPerMm))),
-                              std::max(1, static_cast<int>(std::lround(faceMm.y * pxPerMm))));
+        const glm::ivec2 size(pixelsAlong(std::round(double(faceMm.x) * pxPerMm)),
+                              pixelsAlong(std::round(double(faceMm.y) * pxPerMm)));
+        checkImageSize(size, "the face image", pxPerMm);
         const Image face = rectifyFace(photo, setup, size);
         if (const std::filesystem::path folder = std::filesystem::path(o->out).parent_path(); !folder.empty())
           std::filesystem::create_directories(folder);

@@ -21,6 +21,7 @@
 
 #include "io/project.hpp"
 
+#include "background_pool.hpp"
 #include "document.hpp"
 
 namespace kerf {
@@ -120,7 +121,7 @@ void Autosave::saveInBackground() {
   const QString original = document_->filePath(), name = document_->name(), folder = folder_;
   const std::size_t last = lastHash_;
   writerGeneration_ = generation_;
-  writer_.setFuture(QtConcurrent::run([this, project, original, name, folder, last] {
+  writer_.setFuture(QtConcurrent::run(backgroundPool(), [this, project, original, name, folder, last] {
     const QByteArray text = autosaveText(project, folder, original, name);
     if (hashOf(text) == last) return Written{{}, last, false};  // unchanged since the last copy
     return write(text);

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "background_pool.hpp"
 #include "corner_picker_view.hpp"
 #include "faces_view.hpp"
 #include "qt_image.hpp"
@@ -304,7 +305,7 @@ void PhotoImportDialog::addPhotos(const QStringList& paths) {
             [this, raw] { photoLoaded(raw, raw->watcher->result()); });
     const QString file = entry->path;
     photos_.push_back(std::move(entry));
-    raw->watcher->setFuture(QtConcurrent::run([file]() -> Loaded {
+    raw->watcher->setFuture(QtConcurrent::run(backgroundPool(), [file]() -> Loaded {
       Loaded loaded;
       try {
         const Image full = readImage(file.toStdString());

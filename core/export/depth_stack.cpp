@@ -8,6 +8,7 @@
 #include "util/error.hpp"
 #include "util/number_list.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -49,6 +50,7 @@ LayeredImage renderFaceAtDepth(const WoodModel& model, FaceId face, float depthM
     throw InputError(s.str());
   }
   const glm::ivec2 size = block.faceImageSize(face, pxPerMm);
+  checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)), pxPerMm);
   const glm::vec3 inward = -block.face(face).normal * depthMm;
   LayeredImage out;
   out.pxPerMm = pxPerMm;

@@ -43,6 +43,10 @@ ExportSummary runPartExport(const WoodModel& model, const ExportRequest& request
   summary.message = s.str();
   if (!result.fit.fits())
     summary.warning = result.fit.describe() + "; the wood there is the model continued beyond the block";
+  if (!result.topology.closed()) {
+    if (!summary.warning.empty()) summary.warning += "; ";
+    summary.warning += "the mesh is not a closed solid: " + result.topology.describeOpen();
+  }
   return summary;
 }
 

@@ -12,6 +12,7 @@
 #include "render/renderers.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -236,6 +237,7 @@ LayeredImage renderFaceLayers(const WoodModel& model, FaceId face, float pxPerMm
   LayeredImage out;
   out.pxPerMm = pxPerMm;
   const glm::ivec2 size = model.block().faceImageSize(face, pxPerMm);
+  checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)), pxPerMm);
   out.colour = renderFace(model, face, size, samples, progress.part(0.0, 0.8));
   fillGrowth(
       model, out, [&](int x, int y) { return model.block().pixelCenter(face, x, y, size); },

@@ -29,6 +29,7 @@ PartExportResult exportPart(const WoodModel& model, const PartExportOptions& opt
   const Mesh placed = placeMesh(mesh, options.placement);
   PartExportResult result;
   result.fit = checkPartFit(model.block(), placed.positions);
+  result.topology = meshTopology(mesh);
   if (options.requireFit && !result.fit.fits())
     throw InputError("part " + options.mesh.string() + ": " + result.fit.describe());
   progress.throwIfCancelled();

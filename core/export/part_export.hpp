@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_topology.hpp"
 #include "mesh/part_placement.hpp"
 #include "util/progress.hpp"
 
@@ -27,6 +28,7 @@ struct PartExportOptions {
 struct PartExportResult {
   std::vector<std::filesystem::path> files;
   PartFit fit;
+  MeshTopology topology;  // open edges are allowed (a surface can be baked) but worth a warning
   std::size_t triangles = 0, charts = 0, samples = 0;
   float texelsPerMm = 0;
 };

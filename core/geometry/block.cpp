@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include "util/error.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 
@@ -38,9 +39,10 @@ CrossSlot crossSlot(FaceId face) {
 
 Block::Block(glm::vec3 sizeMm) : size_(sizeMm) {
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(size_[i]) || size_[i] <= 0.0f) {
-      throw InputError("block size must be three positive lengths in mm, got " + std::to_string(size_.x) +
-                       " x " + std::to_string(size_.y) + " x " + std::to_string(size_.z));
+    if (!std::isfinite(size_[i]) || size_[i] <= 0.0f || size_[i] > kMaxBlockSideMm) {
+      throw InputError("block size must be three positive lengths of at most 100000 mm, got " +
+                       std::to_string(size_.x) + " x " + std::to_string(size_.y) + " x " +
+                       std::to_string(size_.z));
     }
   }
 }
@@ -73,8 +75,8 @@ FaceFrame Block::face(FaceId face) const {
 
 glm::ivec2 Block::faceImageSize(FaceId id, float pxPerMm) const {
   const FaceFrame f = face(id);
-  return {std::max(1, static_cast<int>(std::lround(f.widthMm * pxPerMm))),
-          std::max(1, static_cast<int>(std::lround(f.heightMm * pxPerMm)))};
+  return {pixelsAlong(std::round(double(f.widthMm) * pxPerMm)),
+          pixelsAlong(std::round(double(f.heightMm) * pxPerMm))};
 }
 
 glm::vec3 Block::imageToBlock(FaceId id, glm::vec2 pos, glm::ivec2 imageSize) const {

@@ -47,6 +47,10 @@ struct CrossSlot {
 };
 CrossSlot crossSlot(FaceId face);
 
+// The longest side a block (or a board, a log's bounding box, a panel) may have: 100 m. Longer is a typo
+// or a unit mistake, and would overflow the pixel counts of its images.
+inline constexpr float kMaxBlockSideMm = 100'000.0f;
+
 class Block {
  public:
   // Throws InputError unless every side is finite and positive.

@@ -1,25 +1,57 @@
 #include "io/atomic_file.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 #include "util/error.hpp"
 
 namespace kerf {
+namespace {
 
-void writeFileAtomically(const std::filesystem::path& target,
-                         const std::function<void(const std::filesystem::path&)>& write) {
+// A process killed while writing (SIGKILL, a power cut) leaves its hidden temporary behind. The next write
+// of the same target removes those whose process no longer exists; a live writer's (another Kerf saving
+// the same file right now) is left alone.
+void removeStaleTemporaries(const std::filesystem::path& folder, const std::filesystem::path& target) {
+  const std::string prefix = "." + target.stem().string() + ".tmp", extension = target.extension().string();
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - extension.size(), extension.size(), extension) != 0)
+      continue;
+    const std::string rest = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
+    const std::size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string::npos || rest.find_first_not_of("0123456789-") != std::string::npos)
+      continue;
+    const long pid = std::strtol(rest.substr(0, dash).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    std::filesystem::remove(it->path(), ignored);
+  }
+}
+
+}  // namespace
+
+std::filesystem::path temporaryFileFor(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
   if (!std::filesystem::is_directory(folder)) {
     throw InputError("cannot write " + target.string() + ": folder " + folder.string() + " does not exist");
   }
-  const std::filesystem::path temporary =
-      folder / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
-                std::to_string(counter++) + target.extension().string());
+  removeStaleTemporaries(folder, target);
+  return folder / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
+                   std::to_string(counter++) + target.extension().string());
+}
+
+void writeFileAtomically(const std::filesystem::path& target,
+                         const std::function<void(const std::filesystem::path&)>& write) {
+  const std::filesystem::path temporary = temporaryFileFor(target);
   try {
     write(temporary);
     std::error_code error;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "util/error.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -174,9 +175,7 @@ glm::vec2 photoResolution(const std::array<glm::vec2, 4>& corners, glm::vec2 fac
 
 Image rectifyFace(const Image& photo, const FacePhotoSetup& setup, glm::ivec2 faceSize) {
   if (photo.empty()) throw InputError("the photo is empty");
-  if (faceSize.x < 1 || faceSize.y < 1 || faceSize.x > 32768 || faceSize.y > 32768)
-    throw InputError("face image size " + std::to_string(faceSize.x) + " x " + std::to_string(faceSize.y) +
-                     " px is out of range (1 .. 32768)");
+  checkImageSize(faceSize, "the face image");
   if (photo.channels < 1 || photo.channels > 4)
     throw InputError("photos with " + std::to_string(photo.channels) + " channels are not supported");
   const int rotation = normalizedRotation(setup.rotationDegrees);

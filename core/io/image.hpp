@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "util/size_limits.hpp"
+
 namespace kerf {
 
 struct Image {
@@ -23,10 +25,9 @@ struct Image {
   bool empty() const { return pixels.empty(); }
 };
 
-// The largest image Kerf decodes: 120 megapixels (a 100 MP camera's photo; about 1.4 GB as float RGB).
-// Larger files are refused from their header, before any pixel memory is taken, so a photo that claims
-// 20000 x 20000 pixels (or a corrupt header) cannot exhaust memory. readImageSize does not apply it.
-inline constexpr long long kMaxImagePixels = 120'000'000;
+// readImage refuses files over kMaxImagePixels (util/size_limits.hpp) from their header, before any pixel
+// memory is taken, so a photo that claims 20000 x 20000 pixels (or a corrupt header) cannot exhaust
+// memory. readImageSize does not apply it.
 
 // Reads any format OpenImageIO knows; converts to float 0..1 with 3 channels (grey is replicated,
 // alpha dropped) unless keepChannels. Throws InputError with a message naming the file.

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -26,11 +27,9 @@ NrrdWriter::NrrdWriter(const std::filesystem::path& path, const NrrdLayout& layo
     : path_(path), layout_(layout) {
   if (layout.size.x < 1 || layout.size.y < 1 || layout.size.z < 1)
     throw InputError("volume size must be positive");
-  const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
-  if (!std::filesystem::is_directory(folder)) {
-    throw InputError("cannot write " + path.string() + ": folder " + folder.string() + " does not exist");
-  }
-  temporary_ = folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  // Hidden, named as writeFileAtomically names its temporaries: the next export of this file removes what
+  // a killed one left.
+  temporary_ = temporaryFileFor(path);
   file_ = std::fopen(temporary_.c_str(), "wb");
   if (!file_) throw InputError("cannot create " + path.string());
 

@@ -9,9 +9,11 @@
 #include <cmath>
 #include <functional>
 #include <glm/glm.hpp>
+#include <sstream>
 #include <system_error>
 
 #include "export/file_extension.hpp"
+#include "mesh/mesh_topology.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -106,6 +108,19 @@ Mesh loadMesh(const std::filesystem::path& path) {
   for (const glm::vec3& p : mesh.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError("mesh " + name + " has a vertex with a coordinate that is not a number");
+  // A non-manifold part has no inside and outside for the CNC planner, and the bake would texture its
+  // internal faces: refuse it, saying where. Open meshes are only warned about (exportPart).
+  if (const MeshTopology topology = meshTopology(mesh); topology.nonManifoldEdges > 0) {
+    std::ostringstream s;
+    s.precision(4);
+    const glm::vec3 p = topology.firstNonManifold;
+    s << "mesh " << name << " is not the surface of a solid: " << topology.nonManifoldEdges
+      << (topology.nonManifoldEdges == 1 ? " edge is" : " edges are")
+      << " shared by more than two triangles (e.g. at " << p.x << ", " << p.y << ", " << p.z
+      << " in the file's units); repair it in the CAD program (Blender: Select > All by Trait > Non "
+         "Manifold)";
+    throw InputError(s.str());
+  }
   if (!std::any_of(mesh.uvs.begin(), mesh.uvs.end(), [](glm::vec2 t) { return t != glm::vec2(0.0f); }))
     mesh.uvs.clear();
   return mesh;

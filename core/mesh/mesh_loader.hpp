@@ -11,7 +11,8 @@ namespace kerf {
 // The extensions loadMesh accepts (lower case, with the dot).
 bool isMeshExtension(const std::string& lowerExtension);
 
-// Throws InputError naming the file: unreadable, unknown format, no triangles, non-finite coordinates.
+// Throws InputError naming the file: unreadable, unknown format, no triangles, non-finite coordinates,
+// non-manifold edges (mesh_topology.hpp).
 Mesh loadMesh(const std::filesystem::path& path);
 
 }  // namespace kerf

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "util/error.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -149,6 +150,7 @@ UvAtlas buildUvAtlas(const Mesh& mesh, const UvAtlasOptions& options) {
     throw InputError("the texture resolution must be between 16 and 16384 texels");
   if (mesh.triangles.empty()) throw InputError("mesh " + mesh.name + " has no faces");
   const int side = options.resolution;
+  checkImageSize({side, side}, "the part's texture");
   const int padding = options.padding >= 0 ? options.padding : std::max(2, side / 256);
   const std::size_t triangleCount = mesh.triangles.size();
 

@@ -12,6 +12,7 @@
 #include "util/error.hpp"
 #include "util/number_list.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 
@@ -138,6 +139,7 @@ BoardFaceLayout layoutBoardFace(const KnotField& field, const Board& board,
   const FaceFrame frame = block.face(options.face);
   const float pxPerMm = static_cast<float>(options.resolution) / std::max(frame.widthMm, frame.heightMm);
   layout.size = block.faceImageSize(options.face, pxPerMm);
+  checkImageSize(layout.size, "the image of the board's face " + std::string(1, faceLetter(options.face)));
   const glm::mat3 axes = board.axes();
   auto logPoint = [&](glm::vec2 imagePos) {
     return board.center + axes * block.imageToBlock(options.face, imagePos, layout.size);

@@ -7,6 +7,7 @@
 
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -83,8 +84,9 @@ Image renderBoardCut(const BoardWood& wood, const CutPlane& plane, float pxPerMm
   const auto bounds = plane.boundsInBlock(block);
   if (!bounds) throw InputError("the cut plane does not pass through the board");
   const glm::vec2 extent = bounds->max - bounds->min;
-  const int width = std::max(1, static_cast<int>(std::ceil(extent.x * pxPerMm - 1e-3f)));
-  const int height = std::max(1, static_cast<int>(std::ceil(extent.y * pxPerMm - 1e-3f)));
+  const int width = pixelsAlong(std::ceil(double(extent.x) * pxPerMm - 1e-3));
+  const int height = pixelsAlong(std::ceil(double(extent.y) * pxPerMm - 1e-3));
+  checkImageSize({width, height}, "the image of the cut", pxPerMm);
   const KnotCellGrid grid = buildKnotCellGrid(*wood.field, wood.board, knotGridCells(wood.board.size));
   Image image(width, height, 4);
   parallelRows(

@@ -7,6 +7,7 @@
 
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 
@@ -65,6 +66,7 @@ Image renderPanelFace(const KnotField& field, const WoodColorMap& colors, glm::v
   const FaceFrame frame = block.face(face);
   const float pxPerMm = static_cast<float>(resolution) / std::max(frame.widthMm, frame.heightMm);
   const glm::ivec2 size = block.faceImageSize(face, pxPerMm);
+  checkImageSize(size, "the image of the panel's face " + std::string(1, faceLetter(face)));
   const float jointMm = std::max(0.35f, 0.6f / pxPerMm);  // stays visible, but never wider than needed
   return renderMapped(
       field, colors, size, [&](glm::vec2 pos) { return map(block.imageToBlock(face, pos, size), jointMm); },
@@ -228,8 +230,9 @@ Image renderVeneerSheet(const KnotField& field, const WoodColorMap& colors, cons
   if (resolution < 1 || !(lengthMm > 0.0f) || !(widthMm > 0.0f))
     throw InputError("veneer: a positive sheet size and at least 1 pixel");
   const float pxPerMm = static_cast<float>(resolution) / std::max(lengthMm, widthMm);
-  const glm::ivec2 size(std::max(1, static_cast<int>(std::lround(lengthMm * pxPerMm))),
-                        std::max(1, static_cast<int>(std::lround(widthMm * pxPerMm))));
+  const glm::ivec2 size(pixelsAlong(std::round(double(lengthMm) * pxPerMm)),
+                        pixelsAlong(std::round(double(widthMm) * pxPerMm)));
+  checkImageSize(size, "the image of the veneer sheet");
   const glm::vec2 mmPerPx(lengthMm / static_cast<float>(size.x), widthMm / static_cast<float>(size.y));
   return renderMapped(
       field, colors, size,

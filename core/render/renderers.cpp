@@ -5,11 +5,10 @@
 
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
-
-constexpr int kMaxImageSide = 16384;
 
 void checkSamples(int samples) {
   if (samples < 1 || samples > 8) throw InputError("samples per pixel side must be 1..8");
@@ -20,9 +19,7 @@ void checkSamples(int samples) {
 Image renderFace(const WoodModel& model, FaceId face, glm::ivec2 size, int samples,
                  const Progress& progress) {
   checkSamples(samples);
-  if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) {
-    throw InputError("face image size must be 1.." + std::to_string(kMaxImageSide) + " pixels a side");
-  }
+  checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)));
   Image image(size.x, size.y, 3);
   const float weight = 1.0f / (samples * samples);
   parallelRows(
@@ -47,6 +44,13 @@ std::array<Image, 6> renderFaces(const WoodModel& model, float pxPerMm, int samp
                                  const Progress& progress) {
   if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
     throw InputError("pixels per mm must be a positive number");
+  std::uint64_t bytes = 0;  // all six are kept
+  for (FaceId face : kAllFaces) {
+    const glm::ivec2 size = model.block().faceImageSize(face, pxPerMm);
+    checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)), pxPerMm);
+    bytes += std::uint64_t(size.x) * std::uint64_t(size.y) * 3 * sizeof(float);
+  }
+  checkMemoryNeed(bytes, "rendering the six faces");
   std::array<Image, 6> images;
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
@@ -66,12 +70,9 @@ Image renderCut(const WoodModel& model, const CutPlane& plane, float pxPerMm, in
   const auto bounds = plane.boundsInBlock(model.block());
   if (!bounds) throw InputError("the cut plane does not pass through the block");
   const glm::vec2 extent = bounds->max - bounds->min;
-  const int width = std::max(1, static_cast<int>(std::ceil(extent.x * pxPerMm - 1e-3f)));
-  const int height = std::max(1, static_cast<int>(std::ceil(extent.y * pxPerMm - 1e-3f)));
-  if (width > kMaxImageSide || height > kMaxImageSide) {
-    throw InputError("the cut image would be " + std::to_string(width) + "x" + std::to_string(height) +
-                     " pixels; lower --px-per-mm (at most " + std::to_string(kMaxImageSide) + " a side)");
-  }
+  const int width = pixelsAlong(std::ceil(double(extent.x) * pxPerMm - 1e-3));
+  const int height = pixelsAlong(std::ceil(double(extent.y) * pxPerMm - 1e-3));
+  checkImageSize({width, height}, "the image of the cut", pxPerMm);
   Image image(width, height, 4);
   const float weight = 1.0f / (samples * samples);
   const Block& block = model.block();

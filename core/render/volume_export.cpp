@@ -6,9 +6,11 @@
 #include <sstream>
 #include <vector>
 
+#include "export/file_extension.hpp"
 #include "export/volume_writer.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 
@@ -17,6 +19,35 @@ VolumeQuantity volumeQuantityFromName(std::string_view name) {
   if (name == "color" || name == "colour") return VolumeQuantity::Color;
   throw InputError("unknown volume quantity \"" + std::string(name) + "\" (use growth or color)");
 }
+
+namespace {
+
+// A volume is written slice by slice (NRRD, raw) or kept whole until written (OpenVDB): refuse at once
+// what the disk or the memory cannot hold, instead of failing an hour into a 4096^3 export.
+void checkVolumeFits(const std::filesystem::path& path, glm::ivec3 n, int bytesPerSample) {
+  const std::uint64_t samples = std::uint64_t(n.x) * std::uint64_t(n.y) * std::uint64_t(n.z);
+  const std::string size = std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z);
+  if (lowerExtension(path) == ".vdb") {
+    // OpenVDB's dense leaves: a float (growth) or 3 floats (colour) per voxel, plus about 6 % for the tree.
+    const std::uint64_t perSample = bytesPerSample == 4 ? 4 : 12;
+    checkMemoryNeed(samples * perSample / 16 * 17, "the " + size + " VDB volume");
+    return;
+  }
+  std::error_code ec;
+  const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+  const std::filesystem::space_info space = std::filesystem::space(folder, ec);
+  const std::uint64_t bytes = samples * std::uint64_t(bytesPerSample);
+  if (!ec && bytes > space.available) {
+    std::ostringstream s;
+    s.precision(3);
+    s << "the " << size << " volume needs " << bytes / double(1ull << 30) << " GiB on disk; "
+      << folder.string() << " has " << space.available / double(1ull << 30)
+      << " GiB free: lower the resolution";
+    throw InputError(s.str());
+  }
+}
+
+}  // namespace
 
 VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
                                 const std::filesystem::path& path, const Progress& progress) {
@@ -62,6 +93,7 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
     layout.keyValues.emplace_back("quantity", "color");
   }
 
+  checkVolumeFits(path, n, growth ? 4 : 3);
   const std::unique_ptr<VolumeWriter> writer = openVolumeWriter(path, layout);  // .nrrd or .vdb
   const std::size_t sliceSamples = static_cast<std::size_t>(n.x) * n.y;
   std::vector<float> floats(growth ? sliceSamples : 0);

@@ -4,6 +4,8 @@
 //   crash_child save PROJECT  opens PROJECT, attaches a random log (megabytes of JSON, so a save takes a
 //                             while) and saves it over and over (Ctrl+S), the ring width alternating
 //                             between 2 and 3 mm, printing "saved N" after each save
+//   crash_child export PROJECT OUT   opens PROJECT and exports a 320^3 colour volume to OUT (.nrrd),
+//                             printing "exporting" once the export job runs and "exported" when done
 // It never exits by itself: the parent kills it.
 #include <QApplication>
 #include <QTimer>
@@ -11,6 +13,7 @@
 
 #include "autosave.hpp"
 #include "document.hpp"
+#include "export/export_job.hpp"
 #include "main_window.hpp"
 #include "params/parameter_schema.hpp"
 
@@ -25,8 +28,8 @@ void say(const char* line) {
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: crash_child fit|save PROJECT\n");
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: crash_child fit|save PROJECT, crash_child export PROJECT OUT\n");
     return 2;
   }
   const QString mode = QString::fromLocal8Bit(argv[1]);
@@ -51,6 +54,13 @@ int main(int argc, char** argv) {
       window.autosave()->saveNow();
       say("autosaved");
       window.detectRings();
+    } else if (mode == "export" && argc == 4) {
+      ExportRequest request;
+      request.out = argv[3];
+      request.quantity = VolumeQuantity::Color;
+      request.resolution = 320;
+      window.startExport(request);
+      say("exporting");
     } else {
       window.openRandomLog(7);
     }
@@ -72,6 +82,11 @@ int main(int argc, char** argv) {
     say("fitting");
   });
   QObject::connect(&window, &MainWindow::growthFieldFitted, [] { say("fitted"); });
+  QObject::connect(&window, &MainWindow::exportFinished, [] { say("exported"); });
+  QObject::connect(&window, &MainWindow::exportFailed, [](const QString& message) {
+    std::fprintf(stderr, "crash_child: %s\n", qPrintable(message));
+    QCoreApplication::exit(3);
+  });
   window.openDocument(QString::fromLocal8Bit(argv[2]));
   return app.exec();
 }

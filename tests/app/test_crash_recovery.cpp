@@ -2,12 +2,15 @@
 // - during a growth-field fit: the project on disk is untouched, and the next start finds the autosave
 //   copy with the unsaved edit and recovers it;
 // - during saves: whenever the kill lands, the project file is a complete project, the last one or the
-//   one before it (saves are atomic), never a truncated one.
+//   one before it (saves are atomic), never a truncated one;
+// - during an export over an earlier export: the earlier file is untouched, and the partial temporary the
+//   kill leaves is removed by the next export to the same file.
 // The editor runs in a child process (crash_child.cpp) that is killed from here.
 #include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QRandomGenerator>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -17,6 +20,8 @@
 #include "document.hpp"
 #include "io/project.hpp"
 #include "main_window.hpp"
+#include "render/volume_export.hpp"
+#include "render/wood_model.hpp"
 
 using namespace kerf;
 
@@ -58,6 +63,7 @@ class TestCrashRecovery : public QObject {
   void initTestCase();
   void killedDuringAFitKeepsTheProjectAndRecoversTheEdit();
   void killedDuringSavesLeavesACompleteProject();
+  void killedDuringAnExportKeepsTheEarlierFile();
 
  private:
   QTemporaryDir dir_;
@@ -120,6 +126,36 @@ void TestCrashRecovery::killedDuringSavesLeavesACompleteProject() {
       QFAIL(qPrintable(QString("round %1: the project no longer loads: %2").arg(round).arg(e.what())));
     }
   }
+}
+
+void TestCrashRecovery::killedDuringAnExportKeepsTheEarlierFile() {
+  const QString folder = dir_.filePath("exports");
+  QVERIFY(QDir().mkpath(folder));
+  const QString out = folder + "/block.nrrd";
+  const WoodModel model(loadProject(project_.toStdString()));
+  exportVolume(model, VolumeQuantity::Color, 16, out.toStdString());  // the earlier export
+  QFile file(out);
+  QVERIFY(file.open(QIODevice::ReadOnly));
+  const QByteArray earlier = file.readAll();
+  file.close();
+
+  QProcess child;
+  QVERIFY2(startUntil(child, {"export", project_, out}, "exporting"), "the child never started its export");
+  QTest::qWait(QRandomGenerator::global()->bounded(100, 600));  // 32 M voxels take seconds
+  killNow(child);
+  QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+  QVERIFY2(!child.readAllStandardOutput().contains("exported"), "the export ended before the kill");
+  QVERIFY(file.open(QIODevice::ReadOnly));
+  QCOMPARE(file.readAll(), earlier);
+  file.close();
+
+  // What the kill left: the partial hidden temporary, if the writer had got that far.
+  const QStringList others =
+      QDir(folder).entryList(QDir::Files | QDir::Hidden).filter(QRegularExpression("^\\."));
+  qInfo("left by the kill: %s", others.isEmpty() ? "nothing" : qPrintable(others.join(", ")));
+  QVERIFY(others.size() <= 1);
+  exportVolume(model, VolumeQuantity::Color, 8, out.toStdString());  // the next export of that file
+  QCOMPARE(QDir(folder).entryList(QDir::Files | QDir::Hidden), QStringList{"block.nrrd"});
 }
 
 QTEST_MAIN(TestCrashRecovery)

@@ -1,13 +1,18 @@
-// The editor's event loop stays responsive while long jobs run (a growth-field fit and a volume export
-// at the same time), and closing the window during a job cancels it cleanly: the window goes away at
-// once, the fit is not applied and the export leaves no file behind (issue 8).
+// The editor's event loop stays responsive while long jobs run (ring detection, texture inference, photo
+// import, and a growth-field fit and a volume export at the same time), and closing the window during a job
+// cancels it cleanly: the window goes away at once, the fit is not applied and the export leaves no file
+// behind (issue 8).
 //
 // The stall probe is a 5 ms timer on the GUI thread: the longest gap between two of its ticks is the
 // longest time the event loop did not get round to user input. It includes the GUI thread's own work
 // while the jobs run: applying previews, repainting the faces and the 3D view (Mesa llvmpipe, on the same
 // two cores as the jobs).
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QImage>
+#include <QPainter>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -18,6 +23,8 @@
 #include "document.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
+#include "photo_import_dialog.hpp"
+#include "quick_texture_options.hpp"
 
 using namespace kerf;
 
@@ -58,6 +65,23 @@ class StallProbe {
   int ticks_ = 0;
 };
 
+// A phone photo of a face: `size` px, the face a lighter quadrilateral with rings on a dark table.
+QImage phonePhoto(QSize size, int seed) {
+  QImage photo(size, QImage::Format_RGB32);
+  photo.fill(QColor(40, 38, 35));
+  QPainter painter(&photo);
+  painter.setRenderHint(QPainter::Antialiasing);
+  const QRectF face(size.width() * 0.15, size.height() * 0.15, size.width() * 0.7, size.height() * 0.7);
+  painter.setBrush(QColor(200, 160, 110));
+  painter.drawRect(face);
+  painter.setBrush(Qt::NoBrush);
+  painter.setPen(QPen(QColor(150, 100, 60), size.width() / 300.0));
+  for (int ring = 1; ring < 40; ++ring)
+    painter.drawEllipse(face.center() + QPointF(seed * 30.0, -seed * 20.0), ring * face.width() / 30.0,
+                        ring * face.height() / 34.0);
+  return photo;
+}
+
 bool folderHasNoFiles(const QString& folder) {
   return QDir(folder).entryList(QDir::Files | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty();
 }
@@ -69,6 +93,8 @@ class TestResponsiveness : public QObject {
  private slots:
   void initTestCase();
   void fitAndExportKeepTheEventLoopResponsive();
+  void detectionAndTextureInferenceKeepTheEventLoopResponsive();
+  void photoImportKeepsTheEventLoopResponsive();
   void closingDuringAJobCancelsIt();
 
  private:
@@ -118,6 +144,80 @@ void TestResponsiveness::fitAndExportKeepTheEventLoopResponsive() {
         probe.elapsedMs(), probe.ticks(), probe.longestMs(), kMaxStallMs);
   QVERIFY2(probe.longestMs() < kMaxStallMs,
            qPrintable(QString("the event loop stalled for %1 ms").arg(probe.longestMs())));
+}
+
+void TestResponsiveness::detectionAndTextureInferenceKeepTheEventLoopResponsive() {
+  auto window = openDemo("demo_texture");
+  QVERIFY(window);
+  QSignalSpy detected(window.get(), &MainWindow::ringsDetected);
+  QSignalSpy ringFailed(window.get(), &MainWindow::ringJobFailed);
+  StallProbe probe;
+  probe.start();
+  window->detectRingsAction()->trigger();
+  QVERIFY(window->isBusy());
+  QTRY_VERIFY_WITH_TIMEOUT(detected.count() + ringFailed.count() > 0, kTimeoutMs);
+  probe.stop();
+  QVERIFY2(ringFailed.isEmpty(), qPrintable(window->lastError()));
+  qInfo("ring detection: %lld ms, longest event-loop stall %lld ms", probe.elapsedMs(), probe.longestMs());
+  QVERIFY2(probe.longestMs() < kMaxStallMs,
+           qPrintable(QString("the event loop stalled for %1 ms during detection").arg(probe.longestMs())));
+
+  window->setTextureOptions(kerf::testing::quickTextureOptions());
+  QSignalSpy inferred(window.get(), &MainWindow::textureInferred);
+  QSignalSpy previewed(window.get(), &MainWindow::texturePreviewed);
+  QSignalSpy textureFailed(window.get(), &MainWindow::textureJobFailed);
+  probe.start();
+  window->inferTextureAction()->trigger();
+  QVERIFY(window->isBusy());
+  QTRY_VERIFY_WITH_TIMEOUT(inferred.count() + textureFailed.count() > 0, 2 * kTimeoutMs);
+  probe.stop();
+  QVERIFY2(textureFailed.isEmpty(), qPrintable(window->lastError()));
+  QVERIFY(previewed.count() >= 1);  // the previews were applied on the GUI thread while it ran
+  qInfo("texture inference: %lld ms, %lld previews, longest event-loop stall %lld ms", probe.elapsedMs(),
+        qint64(previewed.count()), probe.longestMs());
+  QVERIFY2(probe.longestMs() < kMaxStallMs,
+           qPrintable(
+               QString("the event loop stalled for %1 ms during texture inference").arg(probe.longestMs())));
+}
+
+void TestResponsiveness::photoImportKeepsTheEventLoopResponsive() {
+  // Six 17-megapixel phone photos, one per face: decoding them and warping them onto the faces is the
+  // work; the dialog reads them in the background and the import writes the faces in the background.
+  const QString photos = dir_.filePath("photos");
+  QVERIFY(QDir().mkpath(photos));
+  QStringList files;
+  for (int i = 0; i < 6; ++i) {
+    const QString file = photos + QString("/%1_face.jpg").arg(QChar('A' + i));
+    QVERIFY(phonePhoto({4800, 3600}, i).save(file, "JPG", 90));
+    files << file;
+  }
+  auto window = openDemo("demo_import");
+  QVERIFY(window);
+  QSignalSpy imported(window.get(), &MainWindow::photosImported);
+  StallProbe probe;
+  probe.start();
+  window->importPhotos(files);
+  auto* dialog = window->findChild<PhotoImportDialog*>();
+  QVERIFY(dialog);
+  dialog->setAskBeforeReplacing(false);
+  QTRY_VERIFY_WITH_TIMEOUT(dialog->photoCount() == 6 && !dialog->isLoading(), kTimeoutMs);
+  const qint64 loadedMs = probe.elapsedMs(), loadStall = probe.longestMs();
+  dialog->setBlockSize({40, 40, 40});
+  dialog->setPxPerMm(10);
+  dialog->setOutputFolder(dir_.filePath("imported_faces"));
+  QTest::qWait(200);  // the live preview of the six faces
+  auto* buttons = dialog->findChild<QDialogButtonBox*>();
+  QVERIFY(buttons);
+  QTest::mouseClick(buttons->button(QDialogButtonBox::Ok), Qt::LeftButton);
+  QTRY_VERIFY_WITH_TIMEOUT(imported.count() > 0, kTimeoutMs);
+  probe.stop();
+  QVERIFY(QFileInfo::exists(dir_.filePath("imported_faces/F_col.png")));
+  qInfo(
+      "photo import: photos read in %lld ms (longest stall %lld ms), all done in %lld ms, longest "
+      "event-loop stall %lld ms",
+      loadedMs, loadStall, probe.elapsedMs(), probe.longestMs());
+  QVERIFY2(probe.longestMs() < kMaxStallMs,
+           qPrintable(QString("the event loop stalled for %1 ms during the import").arg(probe.longestMs())));
 }
 
 void TestResponsiveness::closingDuringAJobCancelsIt() {

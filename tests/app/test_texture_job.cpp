@@ -12,23 +12,12 @@
 #include "job_runner.hpp"
 #include "log_panel.hpp"
 #include "main_window.hpp"
+#include "quick_texture_options.hpp"
 
 using namespace kerf;
 
 namespace {
 constexpr int kTimeoutMs = 120000;
-
-// Small and quick: one 48 px crop per face, two sweeps over four parameters.
-TextureInferenceOptions quickOptions() {
-  TextureInferenceOptions options;
-  options.loss.cropsPerFace = 1;
-  options.loss.cropSize = 48;
-  options.coarseSearch = false;
-  options.search.maxSweeps = 2;
-  options.parameters = {"pores.radius_earlywood", "pores.cell_size", "rays.spacing", "fibers.strength"};
-  options.fullFaceReport = false;
-  return options;
-}
 }  // namespace
 
 class TestTextureJob : public QObject {
@@ -55,7 +44,7 @@ void TestTextureJob::initTestCase() {
   project_ = QString::fromStdString(writeDemo(dir_.filePath("demo").toStdString(), options).project.string());
   window_ = std::make_unique<MainWindow>(RenderSettings{3.2f, 1});  // 128 px faces, like the photos
   window_->setAskBeforeDiscarding(false);
-  window_->setTextureOptions(quickOptions());
+  window_->setTextureOptions(kerf::testing::quickTextureOptions());
   window_->show();
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
 }

@@ -5,13 +5,25 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include "io/image.hpp"
+#include "util/error.hpp"
 
 namespace kerf::bad {
 
 namespace fs = std::filesystem;
+
+// The message of the InputError `run` throws, or "" when it throws none (anything else fails the test).
+inline std::string errorOf(const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 inline void writeText(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

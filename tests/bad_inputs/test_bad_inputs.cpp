@@ -4,7 +4,6 @@
 // document as it was), and kerf-cli exits with 2 and prints "kerf-cli: error: ..." naming the file,
 // without writing any output.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -16,6 +15,8 @@
 #include "io/image.hpp"
 #include "io/log_data_import.hpp"
 #include "io/project.hpp"
+#include "mesh/mesh_loader.hpp"
+#include "run_cli.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
@@ -39,22 +40,6 @@ std::string replaceAll(std::string s, const std::string& from, const std::string
   for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
     s.replace(at, from.size(), to);
   return s;
-}
-
-struct CliResult {
-  int exitCode = -1;
-  std::string output;
-};
-
-CliResult runCli(const std::string& arguments) {
-  CliResult result;
-  FILE* pipe = ::popen((std::string(KERF_CLI) + " -q " + arguments + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) result.output.append(buffer, n);
-  const int status = ::pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return result;
 }
 
 // ---- makers ---------------------------------------------------------------------------------------
@@ -114,6 +99,16 @@ const char* const kRenderFaces = "render-faces {file} --out {out} --px-per-mm 0.
 const char* const kDetect = "detect {dir} --out {out}";
 const char* const kRectify =
     "rectify {file} --corners 0,0,15,0,15,15,0,15 --size-mm 16,16 --out {out}/face.png";
+const char* const kExportPart = "export {dir}/../demo.kerf --mesh {file} --out {dir}/part.obj";
+
+// Two unit cubes touching along the edge x = y = 1 (as OBJ, each with its own corners): four triangles
+// meet on that edge.
+const char* const kTwoCubesObj =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+    "v 1 1 0\nv 2 1 0\nv 1 2 0\nv 2 2 0\nv 1 1 1\nv 2 1 1\nv 1 2 1\nv 2 2 1\n"
+    "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"
+    "f 9 11 12 10\nf 13 14 16 15\nf 9 10 14 13\nf 11 15 16 12\nf 9 13 15 11\nf 10 12 16 14\n";
+
 const char* const kRenderBoard = "render-board {file} --out {out}/board.png --res 64";
 
 const BadInput kCatalogue[] = {
@@ -351,6 +346,21 @@ const BadInput kCatalogue[] = {
      },
      nullptr, "fewer than two rings found along the fitted pith axis",
      "fit {dir} --out {out}/fit.kerf --ignore-anatomy"},
+    // --- meshes for a textured part ---
+    {"MeshNonManifold",
+     [](const fs::path& d) {
+       writeText(d / "two_cubes.obj", kTwoCubesObj);
+       return d / "two_cubes.obj";
+     },
+     [](const fs::path& p) { (void)loadMesh(p); },
+     "is not the surface of a solid: 1 edge is shared by more than two triangles \\(e.g. at 1, 1, 0.5",
+     kExportPart},
+    {"MeshWithoutFaces",
+     [](const fs::path& d) {
+       writeText(d / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+       return d / "points.obj";
+     },
+     [](const fs::path& p) { (void)loadMesh(p); }, "has no faces", kExportPart},
     // --- outputs ---
     {"OutputFolderMissing", [](const fs::path& d) { return d / "no-such-folder"; }, nullptr,
      "folder .*no-such-folder does not exist", "export {dir}/../demo.kerf --face A --out {file}/A.png"},

@@ -4,11 +4,13 @@
 // past the limit fail with EFBIG as ENOSPC would (the tests run as root, so permissions cannot be used).
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <csignal>
 #include <random>
 
 #include "bad_input_files.hpp"
+#include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "util/error.hpp"
@@ -48,15 +50,6 @@ std::size_t filesIn(const fs::path& dir) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
 
-std::string errorOf(const std::function<void()>& write) {
-  try {
-    write();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 }  // namespace
 
 TEST(OutputFailures, FullDiskKeepsThePreviousProject) {
@@ -90,7 +83,8 @@ TEST(OutputFailures, FullDiskImageWrite) {
       const FullDisk full(4096);
       message = errorOf([&] { writeImage(file, noisy); });
     }
-    EXPECT_NE(message.find("cannot write " + file.string()), std::string::npos) << extension << ": " << message;
+    EXPECT_NE(message.find("cannot write " + file.string()), std::string::npos)
+        << extension << ": " << message;
     EXPECT_EQ(filesIn(dir), 0u) << extension;
   }
 }
@@ -121,4 +115,20 @@ TEST(OutputFailures, CliReportsAFullDisk) {
       << output;
   EXPECT_FALSE(fs::exists(dir / "A.tif"));
   EXPECT_EQ(filesIn(dir), 1u) << "a temporary file was left";
+}
+
+TEST(OutputFailures, TemporaryLeftByAKilledWriterIsRemovedByTheNextWrite) {
+  // A writer killed mid-write leaves its hidden temporary; the next write of the same target removes it
+  // when its process is gone (a pid above Linux's pid_max never exists), and leaves a live writer's.
+  const fs::path dir = folder("killed_writer");
+  const fs::path dead = dir / ".block.tmp999999999-0.kerf",
+                 live = dir / (".block.tmp" + std::to_string(::getppid()) + "-3.kerf");
+  const fs::path other = dir / ".other.tmp999999999-0.kerf", notOurs = dir / ".block.tmpnotes.kerf";
+  for (const fs::path& p : {dead, live, other, notOurs}) writeText(p, "partial");
+  writeTextAtomically(dir / "block.kerf", "{}");
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(other));  // another target's: its own next write removes it
+  EXPECT_TRUE(fs::exists(notOurs));
+  EXPECT_EQ(readBytes(dir / "block.kerf"), "{}");
 }

@@ -10,16 +10,32 @@
 
 namespace kerf::testing {
 
-// A box [-h, h] around the origin (h = size / 2), 6 quads, no normals or uvs.
-inline std::filesystem::path writeBoxObj(const std::filesystem::path& path, glm::vec3 size) {
-  const glm::vec3 h = 0.5f * size;
+// Boxes from min to max corner, each with its own 8 vertices and 6 quads (counter-clockwise seen from
+// outside), no normals or uvs. skipFaces: how many of the last box's quads to leave out (an open box).
+inline std::filesystem::path writeBoxesObj(const std::filesystem::path& path,
+                                           const std::vector<std::pair<glm::vec3, glm::vec3>>& boxes,
+                                           int skipFaces = 0) {
   std::ofstream f(path);
-  for (int i = 0; i < 8; ++i)
-    f << "v " << ((i & 1) ? h.x : -h.x) << ' ' << ((i & 2) ? h.y : -h.y) << ' ' << ((i & 4) ? h.z : -h.z)
-      << '\n';
-  // Counter-clockwise seen from outside.
-  f << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  for (std::size_t b = 0; b < boxes.size(); ++b) {
+    const auto [lo, hi] = boxes[b];
+    for (int i = 0; i < 8; ++i)
+      f << "v " << ((i & 1) ? hi.x : lo.x) << ' ' << ((i & 2) ? hi.y : lo.y) << ' ' << ((i & 4) ? hi.z : lo.z)
+        << '\n';
+    const int faces[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5},
+                             {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
+    const int count = b + 1 == boxes.size() ? 6 - skipFaces : 6;
+    for (int q = 0; q < count; ++q) {
+      f << 'f';
+      for (int k : faces[q]) f << ' ' << k + 8 * b;
+      f << '\n';
+    }
+  }
   return path;
+}
+
+// A box [-h, h] around the origin (h = size / 2).
+inline std::filesystem::path writeBoxObj(const std::filesystem::path& path, glm::vec3 size) {
+  return writeBoxesObj(path, {{-0.5f * size, 0.5f * size}});
 }
 
 // The prism's triangles, counter-clockwise from outside: radius r, y from -h/2 to h/2, n sides.

@@ -510,6 +510,14 @@ TEST(PartExport, DoesNotFitWarnsOrFailsAndErrorsNameTheFile) {
   ExportRequest nan = request;
   nan.part.placement.rotationDeg.x = std::nanf("");
   EXPECT_NE(errorOf(nan).find("rotation must be three numbers"), std::string::npos);
+  ExportRequest open = request;  // a box without its top: baked, with a warning
+  open.out = dir / "tray.glb";
+  open.part.mesh = kerf::testing::writeBoxesObj(dir / "tray.obj", {{{-5, -5, -5}, {5, 5, 5}}}, 1);
+  open.part.placement.translationMm = {0, 0, 0};
+  summary = runExport(demoModel(), open);
+  EXPECT_TRUE(fs::exists(open.out));
+  EXPECT_NE(summary.warning.find("the mesh is not a closed solid: 4 open edges"), std::string::npos)
+      << summary.warning;
   ExportRequest noFolder = request;
   noFolder.out = dir / "no-such-folder" / "x.obj";
   EXPECT_NE(errorOf(noFolder).find("folder"), std::string::npos);

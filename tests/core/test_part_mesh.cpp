@@ -7,6 +7,7 @@
 
 #include "geometry/block.hpp"
 #include "mesh/mesh_loader.hpp"
+#include "mesh/mesh_topology.hpp"
 #include "mesh/part_placement.hpp"
 #include "part_meshes.hpp"
 #include "test_files.hpp"
@@ -92,6 +93,41 @@ TEST(MeshLoad, ErrorsNameTheFile) {
   const std::string garbage = errorOf([&] { loadMesh(dir / "garbage.stl"); });
   EXPECT_NE(garbage.find("garbage.stl"), std::string::npos) << garbage;
   EXPECT_NE(garbage, "(no error)");
+}
+
+TEST(MeshTopology, ClosedBoxAndStlPrismWhoseCornersAreRepeatedPerTriangle) {
+  const fs::path dir = folder("topology-closed");
+  const MeshTopology box = meshTopology(loadMesh(kerf::testing::writeBoxObj(dir / "box.obj", {1, 2, 3})));
+  EXPECT_TRUE(box.closed());
+  EXPECT_EQ(box.edges, 18u);  // 12 box edges and 6 quad diagonals
+  EXPECT_EQ(box.describeOpen(), "");
+  const MeshTopology prism =
+      meshTopology(loadMesh(kerf::testing::writePrismStl(dir / "prism.stl", 8, 20, 24)));
+  EXPECT_TRUE(prism.closed());
+  EXPECT_EQ(prism.edges, 24u * 6);
+  EXPECT_EQ(prism.degenerateTriangles, 0u);
+}
+
+TEST(MeshTopology, BoxWithoutItsTopHasFourOpenEdges) {
+  const fs::path file =
+      kerf::testing::writeBoxesObj(folder("topology-open") / "tray.obj", {{{0, 0, 0}, {2, 2, 2}}}, 1);
+  const MeshTopology t = meshTopology(loadMesh(file));  // open meshes load: a surface can be baked
+  EXPECT_FALSE(t.closed());
+  EXPECT_EQ(t.openEdges, 4u);
+  EXPECT_EQ(t.nonManifoldEdges, 0u);
+  EXPECT_NE(t.describeOpen().find("4 open edges (a hole or a surface, e.g. at "), std::string::npos)
+      << t.describeOpen();
+}
+
+TEST(MeshLoad, NonManifoldMeshIsRefusedSayingWhere) {
+  // Two boxes touching along the edge x = 1, y = 1: four triangles meet there.
+  const fs::path file = kerf::testing::writeBoxesObj(folder("topology-non-manifold") / "two_boxes.obj",
+                                                     {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 0}, {2, 2, 1}}});
+  const std::string error = errorOf([&] { loadMesh(file); });
+  EXPECT_NE(error.find("two_boxes.obj is not the surface of a solid: 1 edge is shared by more than two "
+                       "triangles (e.g. at 1, 1, 0.5 in the file's units)"),
+            std::string::npos)
+      << error;
 }
 
 TEST(PartPlacement, ScaleThenRotateXYZThenTranslate) {
