@@ -14,10 +14,14 @@
 #include "field/growth_field.hpp"
 #include "fit/growth_field_fit.hpp"
 #include "io/project.hpp"
+#include "render/renderers.hpp"
 #include "render/wood_model.hpp"
+#include "rings/ring_detector.hpp"
+#include "texture/texture_inference.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
+using kerf::bad::writeText;
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
@@ -78,6 +82,14 @@ void cancelExportAtRandomMoments(const std::string& name, ExportRequest request)
   EXPECT_GE(cancelled, 1) << "no moment hit the running job (it took " << length.count() << " us)";
 }
 
+// Cancels a job that writes nothing at random moments over its length: it finishes or throws Cancelled.
+void cancelAtRandomMoments(const std::function<void(const Progress&)>& job, int count) {
+  const auto length = timeOf(job);
+  int cancelled = 0;
+  for (const auto delay : moments(length, count)) cancelled += runCancelledAfter(delay, job) ? 1 : 0;
+  EXPECT_GE(cancelled, 1) << "no moment hit the running job (it took " << length.count() << " us)";
+}
+
 }  // namespace
 
 TEST(CancelJobs, ImageExport) {
@@ -115,8 +127,44 @@ TEST(CancelJobs, GrowthFieldFit) {
   const auto job = [&](const Progress& p) {
     (void)fitGrowthFieldToSample(input, block, WoodParameters{}, options, p);
   };
-  const auto length = timeOf(job);
-  int cancelled = 0;
-  for (const auto delay : moments(length, 8)) cancelled += runCancelledAfter(delay, job) ? 1 : 0;
-  EXPECT_GE(cancelled, 1) << "the fit took " << length.count() << " us";
+  cancelAtRandomMoments(job, 8);
+}
+
+TEST(CancelJobs, PartExport) {
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "cancel_jobs";
+  fs::create_directories(dir);
+  writeText(dir / "cube.obj",
+            "v -9 -9 -9\nv 9 -9 -9\nv -9 9 -9\nv 9 9 -9\nv -9 -9 9\nv 9 -9 9\nv -9 9 9\n"
+            "v 9 9 9\nf 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n");
+  ExportRequest request;
+  request.out = "part.glb";
+  request.part.mesh = dir / "cube.obj";
+  request.part.textureResolution = 512;
+  cancelExportAtRandomMoments("part", request);
+}
+
+TEST(CancelJobs, RingDetection) {
+  const WoodModel model{Project()};
+  const Image photo = renderFace(model, FaceId::A, {256, 256});
+  const ClassicalRingDetector detector;
+  cancelAtRandomMoments([&](const Progress& p) { (void)detector.detect(photo, 6.4f, p); }, 8);
+}
+
+TEST(CancelJobs, TextureInference) {
+  const Project project;
+  const GrowthRates rates = project.effectiveRates();
+  const WoodModel model(project.block, project.params, rates);
+  std::array<Image, 6> photos;
+  for (FaceId face : kAllFaces) photos[faceIndex(face)] = renderFace(model, face, {128, 128});
+  TextureInferenceOptions options;  // one crop a face, one sweep over two parameters: about a second
+  options.loss.cropsPerFace = 1;
+  options.loss.cropSize = 48;
+  options.coarseSearch = false;
+  options.search.maxSweeps = 1;
+  options.parameters = {"pores.cell_size", "rays.spacing"};
+  cancelAtRandomMoments(
+      [&](const Progress& p) {
+        (void)inferTexture(project.block, project.params, rates, photos, options, p);
+      },
+      6);
 }
