@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "util/error.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -297,6 +298,10 @@ void ExportDialog::updateLayerControls() {
   updateSizeNote();
 }
 
+QString ExportDialog::sizeNote() const {
+  return sizeNote_ ? sizeNote_->text() : QString();
+}
+
 void ExportDialog::updateSizeNote() {
   if (!sizeNote_) return;
   if (kind_ == Kind::Volume) {
@@ -324,6 +329,12 @@ void ExportDialog::updateSizeNote() {
   QString note = tr("%1 × %2 px, %3 DPI").arg(px.x).arg(px.y).arg(pxPerMm * 25.4, 0, 'f', 1);
   if (kind_ == Kind::DepthStack)
     note += tr(", %1 images").arg(static_cast<int>(std::floor(depth_->value() / step_->value() + 1e-4)) + 1);
+  try {  // say at once what the export would refuse (util/size_limits.hpp)
+    checkImageSize(px, "the image", static_cast<float>(pxPerMm));
+  } catch (const InputError& e) {
+    note = QStringLiteral("<span style='color:#e05050'>%1</span>")
+               .arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+  }
   sizeNote_->setText(note);
 }
 

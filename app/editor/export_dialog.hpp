@@ -30,6 +30,8 @@ class ExportDialog : public QDialog {
   Kind kind() const { return kind_; }
   void setPath(const QString& path);
   QString path() const;
+  // The line under the settings: the image or volume size, or why it cannot be made.
+  QString sizeNote() const;
   void setPxPerMm(double pxPerMm);
   // The export as chosen; valid once accept() has let the dialog close.
   ExportRequest request() const;

@@ -30,6 +30,7 @@ class TestExportDialog : public QObject {
   void faceImageThroughTheDialog();
   void dialogRefusesAMismatchedExtension();
   void depthStackThroughTheDialog();
+  void tooLargeAnImageIsRefusedAndSaidAtOnce();
   void failedExportIsReported();
 
  private:
@@ -103,6 +104,23 @@ void TestExportDialog::depthStackThroughTheDialog() {
   QFile csv(QDir(folder).filePath("depths.csv"));
   QVERIFY(csv.open(QIODevice::ReadOnly));
   QCOMPARE(QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts).size(), 7);  // header + 6 depths
+}
+
+void TestExportDialog::tooLargeAnImageIsRefusedAndSaidAtOnce() {
+  ExportDialog* dialog = window_->showExportDialog(ExportDialog::Kind::FaceImage);
+  dialog->setPath(dir_.filePath("huge_A.tif"));
+  dialog->setPxPerMm(10.0);
+  QVERIFY2(dialog->sizeNote().startsWith("400 × 400 px"), qPrintable(dialog->sizeNote()));
+  dialog->setPxPerMm(400.0);  // 16000 x 16000 px: over the 120 megapixels Kerf makes
+  QVERIFY2(dialog->sizeNote().contains("would be 16000 x 16000 px") &&
+               dialog->sizeNote().contains("use at most 273.86 px/mm"),
+           qPrintable(dialog->sizeNote()));
+  QSignalSpy failed(window_.get(), &MainWindow::exportFailed);
+  dialog->accept();  // the export refuses it at once, before taking the memory
+  QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, kTimeoutMs);
+  QVERIFY2(failed.at(0).at(0).toString().contains("Kerf makes images of up to 120 megapixels"),
+           qPrintable(failed.at(0).at(0).toString()));
+  QVERIFY(!QFile::exists(dir_.filePath("huge_A.tif")));
 }
 
 void TestExportDialog::failedExportIsReported() {
