@@ -46,7 +46,7 @@ Command addDetectCommand(CLI::App& app) {
         if (!missing.empty() && !o->allowMissing)
           throw InputError(o->document + " has no photo for face " + missing +
                            " (expected <face>_col.png; --allow-missing skips those faces)");
-        fs::create_directories(o->out);
+        createOutputFolder(o->out);
         const ClassicalRingDetector detector;
         nlohmann::json facesJson = nlohmann::json::object();
         std::string summary;

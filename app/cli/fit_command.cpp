@@ -48,80 +48,81 @@ Command addFitCommand(CLI::App& app) {
   fit->add_option("--anatomy-weight", o->anatomyWeight,
                   "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
       ->check(CLI::Range(0.0, 100.0));
-  return {fit, [o](Context& context) {
-            const fs::path sample = o->sample;
-            const bool isProject = fs::is_regular_file(sample);
-            if (!isProject && !fs::is_directory(sample))
-              throw InputError("not a sample folder or project file: " + sample.string());
-            const fs::path folder = isProject ? sample.parent_path() : sample;
-            Project project;  // without photos, the ring images alone are enough to fit
-            if (isProject) {
-              project = loadProject(sample);
-            } else {
-              try {
-                project = projectFromSampleFolder(folder);
-              } catch (const InputError&) {
-              }
-            }
+  return {
+      fit, [o](Context& context) {
+        const fs::path sample = o->sample;
+        const bool isProject = fs::is_regular_file(sample);
+        if (!isProject && !fs::is_directory(sample))
+          throw InputError("not a sample folder or project file: " + sample.string());
+        const fs::path folder = isProject ? sample.parent_path() : sample;
+        Project project;  // without photos, the ring images alone are enough to fit
+        if (isProject) {
+          project = loadProject(sample);
+        } else {
+          try {
+            project = projectFromSampleFolder(folder);
+          } catch (const InputError&) {
+          }
+        }
 
-            GrowthFieldFitInput input;
-            if (!o->ignoreTraces) input.traces = project.annotations.traces;
-            input.knotMarks = project.annotations.knots;  // knots of the field (Mokume Sec. 5.2.4)
-            std::array<std::string, 6> files;
-            for (FaceId face : kAllFaces) {
-              const fs::path file = findRingLocalizationImage(folder, face);
-              if (file.empty()) {
-                // A sample traced by hand needs no ring images; otherwise say which face is skipped.
-                if (input.traces.empty())
-                  std::fprintf(stderr,
-                               "kerf-cli: warning: face %c has no ring-localization image (%c_arl*.png); "
-                               "skipped\n",
-                               faceLetter(face), faceLetter(face));
-                continue;
-              }
-              input.rings[faceIndex(face)] = readRingLocalizationImage(file);
-              files[faceIndex(face)] = file.filename().string();
-            }
-            // Photos for the anatomical prior (fit/anatomy_prior.hpp).
-            for (FaceId face : kAllFaces) {
-              const fs::path file = isProject ? project.facePhotos[faceIndex(face)]
-                                              : folder / (std::string(1, faceLetter(face)) + "_col.png");
-              if (!file.empty() && fs::exists(file)) input.photos[faceIndex(face)] = readImage(file);
-            }
-            GrowthFieldFitOptions options;
-            options.principal = o->principal == "x"   ? glm::vec3(1, 0, 0)
-                                : o->principal == "z" ? glm::vec3(0, 0, 1)
-                                                      : glm::vec3(0, 1, 0);
-            options.pithOnly = o->pithOnly;
-            options.useAnatomy = !o->ignoreAnatomy;
-            options.anatomyWeight = o->anatomyWeight;
-            const GrowthFieldFitResult fit = [&] {
-              try {
-                return fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());
-              } catch (const InputError& e) {  // the fit knows no file names: say which sample failed
-                throw InputError(std::string(e.what()) + " (fitting " + sample.string() + ")");
-              }
-            }();
-            for (FaceId face : kAllFaces)
-              if (!files[faceIndex(face)].empty())
-                std::printf("face %c: %d contours from %s\n", faceLetter(face),
-                            fit.report.contoursPerFace[faceIndex(face)], files[faceIndex(face)].c_str());
-            for (const std::string& line : formatGrowthFieldFitReport(fit.report)) {
-              if (line.rfind("warning: ", 0) == 0)
-                std::fprintf(stderr, "kerf-cli: %s\n", line.c_str());
-              else
-                std::printf("%s\n", line.c_str());
-            }
-            project.params = fit.params;
-            project.knots = fit.knots;
-            project.rates =
-                fit.rates ? *fit.rates
-                          : GrowthRates::uniform(project.block, PithAxis::fromAngles(fit.params.pithOrigin,
-                                                                                     fit.params.pithTilt,
-                                                                                     fit.params.pithAzimuth));
-            saveProject(project, o->out);
-            std::printf("project written to %s\n", o->out.c_str());
-          }};
+        GrowthFieldFitInput input;
+        if (!o->ignoreTraces) input.traces = project.annotations.traces;
+        input.knotMarks = project.annotations.knots;  // knots of the field (Mokume Sec. 5.2.4)
+        std::array<std::string, 6> files;
+        for (FaceId face : kAllFaces) {
+          const fs::path file = findRingLocalizationImage(folder, face);
+          if (file.empty()) {
+            // A sample traced by hand needs no ring images; otherwise say which face is skipped.
+            if (input.traces.empty())
+              std::fprintf(stderr,
+                           "kerf-cli: warning: face %c has no ring-localization image (%c_arl*.png); "
+                           "skipped\n",
+                           faceLetter(face), faceLetter(face));
+            continue;
+          }
+          input.rings[faceIndex(face)] = readRingLocalizationImage(file);
+          files[faceIndex(face)] = file.filename().string();
+        }
+        // Photos for the anatomical prior (fit/anatomy_prior.hpp).
+        for (FaceId face : kAllFaces) {
+          const fs::path file = isProject ? project.facePhotos[faceIndex(face)]
+                                          : folder / (std::string(1, faceLetter(face)) + "_col.png");
+          if (!file.empty() && fs::exists(file)) input.photos[faceIndex(face)] = readImage(file);
+        }
+        GrowthFieldFitOptions options;
+        options.principal = o->principal == "x"   ? glm::vec3(1, 0, 0)
+                            : o->principal == "z" ? glm::vec3(0, 0, 1)
+                                                  : glm::vec3(0, 1, 0);
+        options.pithOnly = o->pithOnly;
+        options.useAnatomy = !o->ignoreAnatomy;
+        options.anatomyWeight = o->anatomyWeight;
+        const GrowthFieldFitResult fit = [&] {
+          try {
+            return fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());
+          } catch (const InputError& e) {  // the fit knows no file names: say which sample failed
+            throw InputError(std::string(e.what()) + " (fitting " + sample.string() + ")");
+          }
+        }();
+        for (FaceId face : kAllFaces)
+          if (!files[faceIndex(face)].empty())
+            std::printf("face %c: %d contours from %s\n", faceLetter(face),
+                        fit.report.contoursPerFace[faceIndex(face)], files[faceIndex(face)].c_str());
+        for (const std::string& line : formatGrowthFieldFitReport(fit.report)) {
+          if (line.rfind("warning: ", 0) == 0)
+            std::fprintf(stderr, "kerf-cli: %s\n", line.c_str());
+          else
+            std::printf("%s\n", line.c_str());
+        }
+        project.params = fit.params;
+        project.knots = fit.knots;
+        project.rates =
+            fit.rates ? *fit.rates
+                      : GrowthRates::uniform(project.block,
+                                             PithAxis::fromAngles(fit.params.pithOrigin, fit.params.pithTilt,
+                                                                  fit.params.pithAzimuth));
+        saveProject(project, o->out);
+        std::printf("project written to %s\n", o->out.c_str());
+      }};
 }
 
 }  // namespace kerf::cli

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "io/atomic_file.hpp"
 #include "io/face_photo_rectify.hpp"
 #include "io/image.hpp"
 #include "util/error.hpp"
@@ -101,7 +102,7 @@ Command addRectifyCommand(CLI::App& app) {
         checkImageSize(size, "the face image", pxPerMm);
         const Image face = rectifyFace(photo, setup, size);
         if (const std::filesystem::path folder = std::filesystem::path(o->out).parent_path(); !folder.empty())
-          std::filesystem::create_directories(folder);
+          createOutputFolder(folder);
         writeImage(o->out, face);
         context.samples += static_cast<std::size_t>(size.x) * size.y;
         std::printf("face written to %s (%d x %d px, %.4g px/mm)\n", o->out.c_str(), size.x, size.y, pxPerMm);

@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "field/knot_field.hpp"
+#include "io/atomic_file.hpp"
 #include "io/log_data_import.hpp"
 #include "log_arguments.hpp"
 #include "params/parameter_schema.hpp"
@@ -58,7 +59,7 @@ Command addRenderBoardCommand(CLI::App& app) {
             LogModel log = loadLogArgument(o->log);
             for (const std::string& file : {o->out, o->saveLog}) {
               const std::filesystem::path parent = std::filesystem::path(file).parent_path();
-              if (!file.empty() && !parent.empty()) std::filesystem::create_directories(parent);
+              if (!file.empty() && !parent.empty()) createOutputFolder(parent);
             }
             if (!o->saveLog.empty()) saveLogFile(log, o->saveLog);
             WoodParameters params;

@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "geometry/cut_plane.hpp"
+#include "io/atomic_file.hpp"
 #include "io/project.hpp"
 #include "render/renderers.hpp"
 #include "render/unfolded_cross.hpp"
@@ -41,7 +42,7 @@ Command addRenderFacesCommand(CLI::App& app) {
   return {faces, [o](Context& context) {
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
-            fs::create_directories(o->out);
+            createOutputFolder(o->out);
             const auto images = renderFaces(model, o->pxPerMm, o->samples, context.progress());
             for (FaceId face : kAllFaces) {
               const Image& image = images[faceIndex(face)];

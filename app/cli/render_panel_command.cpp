@@ -5,6 +5,7 @@
 
 #include "command.hpp"
 #include "field/knot_field.hpp"
+#include "io/atomic_file.hpp"
 #include "log_arguments.hpp"
 #include "render/panel_render.hpp"
 #include "util/error.hpp"
@@ -86,7 +87,7 @@ Command addRenderPanelCommand(CLI::App& app) {
             const Image& image = panel.image;
             const std::string& what = panel.description;
             const std::filesystem::path parent = std::filesystem::path(o->out).parent_path();
-            if (!parent.empty()) std::filesystem::create_directories(parent);
+            if (!parent.empty()) createOutputFolder(parent);
             writeImage(o->out, image);
             context.samples = static_cast<std::size_t>(image.width) * image.height;
             std::printf("%s written to %s (%d x %d px)\n", what.c_str(), o->out.c_str(), image.width,

@@ -95,10 +95,8 @@ DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOption
       << faceLetter(options.face) << " has " << thickness << " mm of wood behind it)";
     throw InputError(s.str());
   }
-  std::error_code error;
   const bool folderExisted = std::filesystem::exists(folder);
-  std::filesystem::create_directories(folder, error);
-  if (error) throw InputError("cannot create the folder " + folder.string() + ": " + error.message());
+  createOutputFolder(folder);
 
   ImageWriteOptions write;
   write.pngLayer = options.layer;

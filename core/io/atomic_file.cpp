@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 
 #include "util/error.hpp"
@@ -17,8 +18,16 @@ namespace {
 // A process killed while writing (SIGKILL, a power cut) leaves its hidden temporary behind. The next write
 // of the same target removes those whose process no longer exists; a live writer's (another Kerf saving
 // the same file right now) is left alone.
+// ".NAME.tmp": the start of every temporary of `target` (built with append: GCC 12 warns falsely about
+// "." + string, -Wrestrict).
+std::string temporaryPrefix(const std::filesystem::path& target) {
+  std::string prefix(".");
+  prefix.append(target.stem().string()).append(".tmp");
+  return prefix;
+}
+
 void removeStaleTemporaries(const std::filesystem::path& folder, const std::filesystem::path& target) {
-  const std::string prefix = "." + target.stem().string() + ".tmp", extension = target.extension().string();
+  const std::string prefix = temporaryPrefix(target), extension = target.extension().string();
   std::error_code error;
   for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
     const std::string name = it->path().filename().string();
@@ -44,9 +53,12 @@ std::filesystem::path temporaryFileFor(const std::filesystem::path& target) {
   if (!std::filesystem::is_directory(folder)) {
     throw InputError("cannot write " + target.string() + ": folder " + folder.string() + " does not exist");
   }
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw InputError("cannot write " + target.string() + ": folder " + folder.string() +
+                     " is not writable (" + std::strerror(errno) + ")");
   removeStaleTemporaries(folder, target);
-  return folder / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
-                   std::to_string(counter++) + target.extension().string());
+  return folder / (temporaryPrefix(target) + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                   target.extension().string());
 }
 
 void writeFileAtomically(const std::filesystem::path& target,
@@ -62,6 +74,14 @@ void writeFileAtomically(const std::filesystem::path& target,
     std::filesystem::remove(temporary, ignored);
     throw;
   }
+}
+
+void createOutputFolder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error || !std::filesystem::is_directory(folder))
+    throw InputError("cannot create the folder " + folder.string() + ": " +
+                     (error ? error.message() : std::string("a file of that name is in the way")));
 }
 
 void writeTextAtomically(const std::filesystem::path& target, std::string_view text) {

@@ -18,6 +18,9 @@ void writeFileAtomically(const std::filesystem::path& target,
 // when the target's folder does not exist.
 std::filesystem::path temporaryFileFor(const std::filesystem::path& target);
 
+// Creates an output folder and its parents if needed. Throws InputError "cannot create the folder X: why".
+void createOutputFolder(const std::filesystem::path& folder);
+
 // Convenience: atomically writes text.
 void writeTextAtomically(const std::filesystem::path& target, std::string_view text);
 

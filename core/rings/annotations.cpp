@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 #include <set>
 
+#include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "rings/contours.hpp"
 #include "util/error.hpp"
@@ -564,9 +565,7 @@ glm::ivec2 mokumeImageSize(const Block& block, FaceId face) {
 std::vector<fs::path> writeMokumeAnnotations(const Annotations& annotations, const Block& block,
                                              const fs::path& folder, const std::array<glm::ivec2, 6>& sizes) {
   std::vector<fs::path> written;
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (!fs::is_directory(folder)) throw InputError("cannot create the folder " + folder.string());
+  createOutputFolder(folder);
   for (FaceId face : kAllFaces) {
     const std::string letter(1, faceLetter(face));
     const glm::ivec2 size = sizes[faceIndex(face)];

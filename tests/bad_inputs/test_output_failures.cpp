@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
+#include "run_cli.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
@@ -131,4 +132,43 @@ TEST(OutputFailures, TemporaryLeftByAKilledWriterIsRemovedByTheNextWrite) {
   EXPECT_TRUE(fs::exists(other));  // another target's: its own next write removes it
   EXPECT_TRUE(fs::exists(notOurs));
   EXPECT_EQ(readBytes(dir / "block.kerf"), "{}");
+}
+
+TEST(OutputFailures, ReadOnlyFolder) {
+  // As root (CI, containers) permissions do not apply, so kerf-cli runs as "nobody" through setpriv.
+  const bool root = ::geteuid() == 0;
+  if (root && std::system("command -v setpriv >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "running as root without setpriv (util-linux): a read-only folder cannot be shown";
+  const fs::path dir = folder("read_only");
+  saveProject(Project(), dir / "block.kerf");
+  fs::create_directories(dir / "locked");
+  fs::permissions(dir / "locked", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                      fs::perms::group_exec | fs::perms::others_read |
+                                      fs::perms::others_exec);
+  fs::permissions(dir, fs::perms::all);  // nobody may read the project
+  fs::permissions(dir / "block.kerf",
+                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::others_read);
+  const std::string runAs = root ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  const std::string project = (dir / "block.kerf").string(), locked = (dir / "locked").string();
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {"export " + project + " --face A --out " + locked + "/A.png",
+       "cannot write " + locked + "/A.png: folder " + locked + " is not writable (Permission denied)"},
+      {"export " + project + " --res 8 --out " + locked + "/growth.nrrd",
+       "cannot write " + locked + "/growth.nrrd: folder " + locked + " is not writable"},
+      {"export " + project + " --res 8 --out " + locked + "/growth.vdb",
+       "cannot write " + locked + "/growth.vdb: folder " + locked + " is not writable"},
+      {"render-faces " + project + " --px-per-mm 1 --out " + locked + "/faces",
+       "cannot create the folder " + locked + "/faces: Permission denied"},
+      {"export " + project + " --depth-stack A,1,2 --px-per-mm 1 --out " + locked + "/stack",
+       "cannot create the folder " + locked + "/stack: Permission denied"},
+  };
+  for (const auto& c : cases) {
+    const CliResult r = runCli(c.arguments, runAs);
+    EXPECT_EQ(r.exitCode, 2) << c.arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find("kerf-cli: error: " + c.message), std::string::npos) << r.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir / "locked"));
+  fs::permissions(dir / "locked", fs::perms::owner_all);
 }
