@@ -10,6 +10,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -75,6 +76,7 @@ ExportDialog::ExportDialog(Kind kind, const Block& block, std::optional<CutPlane
     addImageRows(form);
   }
   sizeNote_ = new QLabel;
+  sizeNote_->setWordWrap(true);  // a refusal is a sentence or two
   form->addRow(sizeNote_);
   problem_ = new QLabel;
   problem_->setStyleSheet("color: #c0392b");
@@ -332,10 +334,15 @@ void ExportDialog::updateSizeNote() {
   try {  // say at once what the export would refuse (util/size_limits.hpp)
     checkImageSize(px, "the image", static_cast<float>(pxPerMm));
   } catch (const InputError& e) {
-    note = QStringLiteral("<span style='color:#e05050'>%1</span>")
-               .arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+    QString why = QString::fromUtf8(e.what());
+    why[0] = why[0].toUpper();
+    note = QStringLiteral("<span style='color:#e05050'>%1.</span>").arg(why.toHtmlEscaped());
   }
   sizeNote_->setText(note);
+  if (layout()) {  // grow to show a wrapped refusal whole; never shrink under the user's hands
+    layout()->activate();
+    if (heightForWidth(width()) > height()) resize(width(), heightForWidth(width()));
+  }
 }
 
 }  // namespace kerf

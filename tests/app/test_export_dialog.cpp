@@ -115,6 +115,8 @@ void TestExportDialog::tooLargeAnImageIsRefusedAndSaidAtOnce() {
   QVERIFY2(dialog->sizeNote().contains("would be 16000 x 16000 px") &&
                dialog->sizeNote().contains("use at most 273.86 px/mm"),
            qPrintable(dialog->sizeNote()));
+  QTest::qWait(50);  // the layout makes room for the wrapped note
+  QVERIFY(dialog->grab().save(QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/export_dialog_too_large.png")));
   QSignalSpy failed(window_.get(), &MainWindow::exportFailed);
   dialog->accept();  // the export refuses it at once, before taking the memory
   QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, kTimeoutMs);
