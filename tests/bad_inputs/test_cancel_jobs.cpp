@@ -12,8 +12,12 @@
 #include "bad_input_files.hpp"
 #include "export/export_job.hpp"
 #include "field/growth_field.hpp"
+#include "field/knot_field.hpp"
+#include "field/log_model.hpp"
 #include "fit/growth_field_fit.hpp"
 #include "io/project.hpp"
+#include "render/board_renderer.hpp"
+#include "render/panel_render.hpp"
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"
 #include "rings/ring_detector.hpp"
@@ -167,4 +171,21 @@ TEST(CancelJobs, TextureInference) {
         (void)inferTexture(project.block, project.params, rates, photos, options, p);
       },
       6);
+}
+
+TEST(CancelJobs, BoardAndPanelRenders) {
+  const LogModel log = generateRandomLog({.seed = 3, .lengthMm = 1000.0f, .radiusMm = 120.0f});
+  const KnotField field(log, KnotSettings{});
+  const WoodColorMap colors = woodColorMapFromParameters(WoodParameters{}, log.stem.maxRadius());
+  BoardRenderOptions board;
+  board.resolution = 600;
+  cancelAtRandomMoments(
+      [&](const Progress& p) { (void)renderBoardFace(field, colors, defaultBoard(log), board, nullptr, p); },
+      8);
+  for (PanelType type : {PanelType::Clt, PanelType::Plywood, PanelType::Veneer}) {
+    PanelOptions panel;
+    panel.type = type;
+    panel.resolution = 300;
+    cancelAtRandomMoments([&](const Progress& p) { (void)renderPanel(field, colors, panel, p); }, 6);
+  }
 }
