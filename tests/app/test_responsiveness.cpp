@@ -33,7 +33,17 @@ constexpr int kTimeoutMs = 120000;
 // The longest stall allowed. Single software-rendered 3D frames take up to ~0.4 s on a loaded 2-core
 // machine (docs/performance.md); the views refine in bands so that no single turn takes that long,
 // and the jobs never run on the GUI thread. A blocking fit or export would stall for seconds.
-constexpr qint64 kMaxStallMs = 1000;
+#if defined(__SANITIZE_ADDRESS__)
+constexpr qint64 kSlowdown =
+    2;  // under ASan everything, the GUI thread's own work too, is about twice as slow
+#else
+constexpr qint64 kSlowdown = 1;
+#endif
+constexpr qint64 kMaxStallMs = 1000 * kSlowdown;
+// The import does little on the GUI thread (small previews), so it is held to less: 113-123 ms measured at
+// load 4.5 (277-325 ms under ASan); with its photos read on Qt's global pool (the bug background_pool.hpp
+// explains) 956-1117 ms, which the general bound caught only half the time.
+constexpr qint64 kMaxImportStallMs = 500 * kSlowdown;
 
 class StallProbe {
  public:
@@ -216,7 +226,7 @@ void TestResponsiveness::photoImportKeepsTheEventLoopResponsive() {
       "photo import: photos read in %lld ms (longest stall %lld ms), all done in %lld ms, longest "
       "event-loop stall %lld ms",
       loadedMs, loadStall, probe.elapsedMs(), probe.longestMs());
-  QVERIFY2(probe.longestMs() < kMaxStallMs,
+  QVERIFY2(probe.longestMs() < kMaxImportStallMs,
            qPrintable(QString("the event loop stalled for %1 ms during the import").arg(probe.longestMs())));
 }
 
