@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   # toolchain
-  build-essential cmake ninja-build pkg-config clang-format
+  build-essential cmake ninja-build pkg-config clang-format ccache
   # core libraries
   libglm-dev libeigen3-dev libceres-dev libopencv-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev
