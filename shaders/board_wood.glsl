@@ -19,6 +19,7 @@ WoodSample boardWood(vec3 p) {
   WoodSample s;
   s.year = k.time;
   s.latewood = 1.0;  // the colour map has the rings; the finish's gloss stays even
+  s.pigment = 1.0;
   s.pore = 0.0;
   s.ray = 0.0;
   s.color = knotColor(k);

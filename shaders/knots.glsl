@@ -120,21 +120,21 @@ float knotPowerSmoothMin(float a, float b, float k) {
 // Sec. 4.2.1 (adaptiveK).
 float knotAdaptiveK(float stemTime, float knotTime) {
   float delta = stemTime - knotTime;
-  float sig = delta / (u_knotSmoothTransition + abs(delta));
-  return 0.5 * (u_knotSmoothKnot + u_knotSmoothStem) + 0.5 * (u_knotSmoothKnot - u_knotSmoothStem) * sig;
+  float sig = delta / (P.knotSmoothTransition + abs(delta));
+  return 0.5 * (P.knotSmoothKnot + P.knotSmoothStem) + 0.5 * (P.knotSmoothKnot - P.knotSmoothStem) * sig;
 }
 
 // Sec. 4.2.2 (deadKnotFactor).
 float knotDeadFactor(float tau, float beta) {
-  float wing = 1.0 - u_knotButterfly * cos(2.0 * beta);
-  float progress = 1.0 - exp(-u_knotDeadTransition * max(tau, 0.0));
-  return 1.0 + (u_knotDeadInversion * wing - 1.0) * progress;
+  float wing = 1.0 - P.knotButterfly * cos(2.0 * beta);
+  float progress = 1.0 - exp(-P.knotDeadTransition * max(tau, 0.0));
+  return 1.0 + (P.knotDeadInversion * wing - 1.0) * progress;
 }
 
 float knotWindow(float ratio) {
-  if (ratio >= u_knotReachEnd) return 0.0;
-  if (ratio <= u_knotReachStart) return 1.0;
-  return 1.0 - knotSmoothstep01((ratio - u_knotReachStart) / (u_knotReachEnd - u_knotReachStart));
+  if (ratio >= P.knotReachEnd) return 0.0;
+  if (ratio <= P.knotReachStart) return 1.0;
+  return 1.0 - knotSmoothstep01((ratio - P.knotReachStart) / (P.knotReachEnd - P.knotReachStart));
 }
 
 struct KnotSample {
@@ -165,9 +165,9 @@ KnotSample evaluateKnots(vec3 p, int first, int count) {
   r.time = ts;
   if (ds < 1e-3) return r;
 
-  float reach = u_knotReachEnd * ds;
+  float reach = P.knotReachEnd * ds;
   float reach2 = reach * reach;
-  float maxFraction = 0.9 * min(u_knotReachStart, u_knotReachEnd);
+  float maxFraction = 0.9 * min(P.knotReachStart, P.knotReachEnd);
   float knotMin = 1e30, sumDelta = 0.0;
   for (int n = 0; n < count; ++n) {
     int at = first + n;
@@ -186,29 +186,29 @@ KnotSample evaluateKnots(vec3 p, int first, int count) {
     float window = knotWindow(ratio);
     float beta = atan(dz, along);
     vec2 noise = knotNoiseAt(index, beta, ts);
-    float fraction = (u_knotSpeed - u_knotSpeedDecline * sqrt(ts)) * (1.0 + u_knotSpeedNoise * noise.x);
+    float fraction = (P.knotSpeed - P.knotSpeedDecline * sqrt(ts)) * (1.0 + P.knotSpeedNoise * noise.x);
     fraction = clamp(fraction, 0.01, maxFraction);
     float tb = db / (fraction * rs);
     float k = knotAdaptiveK(ts, tb);
     float tDeath = info.z / rs;
     float tAlive = knotPowerSmoothMin(ts, tb, k);
     float delta = tAlive - min(ts, tb);
-    if (ts > tDeath && ratio < u_knotReachStart) {
-      float width = u_knotOutlineWidth * (1.0 + u_knotOutlineNoise * noise.y);
+    if (ts > tDeath && ratio < P.knotReachStart) {
+      float width = P.knotOutlineWidth * (1.0 + P.knotOutlineNoise * noise.y);
       if (abs(tb - tDeath) < width) r.outline = true;
     }
     if (tAlive > tDeath) {
       float tau = ts - tDeath;
       tb += tau;
-      float kDead = k + u_knotDeadSharpening * tau;
+      float kDead = k + P.knotDeadSharpening * tau;
       delta = knotDeadFactor(tau, beta) * (knotPowerSmoothMin(ts, tb, kDead) - min(ts, tb));
     }
     if (ts > tDeath && tb < ts) {
-      r.deadShade = max(r.deadShade, min(1.0, 3.0 * (ts - tDeath)) * u_knotDeadDarkening);
+      r.deadShade = max(r.deadShade, min(1.0, 3.0 * (ts - tDeath)) * P.knotDeadDarkening);
     }
     knotMin = min(knotMin, tb);
     sumDelta += window * delta;
-    float inside = 1.0 - knotSmoothstep01((tb / ts - (1.0 - u_knotEdgeSoftness)) / max(u_knotEdgeSoftness, 1e-4));
+    float inside = 1.0 - knotSmoothstep01((tb / ts - (1.0 - P.knotEdgeSoftness)) / max(P.knotEdgeSoftness, 1e-4));
     r.darkness = max(r.darkness, window * inside);
     ++r.knotsInReach;
   }
@@ -234,7 +234,7 @@ vec3 knotColorMapAt(float t) {
 // KnotField::color.
 vec3 knotColor(KnotSample s) {
   vec3 c = knotColorMapAt(s.time);
-  c -= (s.darkness + s.deadShade) * u_knotDarkening;
-  if (s.outline) c *= u_knotOutlineShade;
+  c -= (s.darkness + s.deadShade) * P.knotDarkening;
+  if (s.outline) c *= P.knotOutlineShade;
   return clamp(c, vec3(0.0), vec3(1.0));
 }

@@ -26,7 +26,7 @@ Command addParamsCommand(CLI::App& app) {
                              {"soft_range", {spec.softMin, spec.softMax}},
                              {"hard_range", {spec.hardMin, spec.hardMax}},
                              {"fittable", spec.fittable},
-                             {"glsl_uniform", "u_" + std::string(spec.name)},
+                             {"glsl_uniform", glslUniformName(spec)},
                              {"tooltip", spec.tooltip}});
             }
             std::cout << out.dump(2) << "\n";

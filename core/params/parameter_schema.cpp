@@ -99,12 +99,18 @@ void validate(const WoodParameters& params) {
 
 std::string glslUniformDeclarations() {
   std::ostringstream out;
-  out << "// Generated from core/params/wood_parameters.def: one uniform per procedural parameter.\n";
+  out << "// Generated from core/params/wood_parameters.def: the struct WoodParameters of the C++ core.\n"
+      << "struct WoodParameters {\n";
   for (const ParamSpec& spec : parameterSchema()) {
-    out << "uniform " << (spec.components() == 3 ? "vec3" : "float") << " u_" << spec.name << ";  // "
-        << spec.id << (spec.unit.empty() ? "" : " [") << spec.unit << (spec.unit.empty() ? "" : "]") << "\n";
+    out << "  " << (spec.components() == 3 ? "vec3" : "float") << " " << spec.name << ";  // " << spec.id
+        << (spec.unit.empty() ? "" : " [") << spec.unit << (spec.unit.empty() ? "" : "]") << "\n";
   }
+  out << "};\nuniform WoodParameters " << kGlslParametersName << ";\n";
   return out.str();
+}
+
+std::string glslUniformName(const ParamSpec& spec) {
+  return std::string(kGlslParametersName) + "." + std::string(spec.name);
 }
 
 }  // namespace kerf

@@ -64,8 +64,12 @@ struct WoodParameters {
 // Checks every value is finite and inside its hard range; throws InputError naming the parameter.
 void validate(const WoodParameters& params);
 
-// GLSL declarations of one uniform per parameter ("uniform float u_ringWidth;"), generated from the
-// schema, for the shaders of the 3D view.
+// The GLSL twin of WoodParameters, generated from the schema: "struct WoodParameters { float ringWidth;
+// ... }; uniform WoodParameters P;". The model's kernels (core/model/kernels/*.glsl) read a parameter as
+// P.ringWidth in the shaders and in C++ alike.
+inline constexpr const char* kGlslParametersName = "P";
 std::string glslUniformDeclarations();
+// The uniform that holds one parameter in the shaders: "P.ringWidth".
+std::string glslUniformName(const ParamSpec& spec);
 
 }  // namespace kerf

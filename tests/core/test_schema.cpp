@@ -72,11 +72,14 @@ TEST(Schema, ValidationNamesTheBadParameter) {
   EXPECT_THROW(validate(params), InputError);
 }
 
-TEST(Schema, GlslDeclaresOneUniformPerParameter) {
+TEST(Schema, GlslDeclaresTheParameterStructWithEveryParameter) {
   const std::string glsl = glslUniformDeclarations();
+  EXPECT_NE(glsl.find("struct WoodParameters {"), std::string::npos) << glsl;
+  EXPECT_NE(glsl.find("uniform WoodParameters P;"), std::string::npos) << glsl;
   for (const ParamSpec& spec : parameterSchema()) {
-    const std::string line = std::string("uniform ") + (spec.components() == 3 ? "vec3" : "float") + " u_" +
-                             std::string(spec.name) + ";";
-    EXPECT_NE(glsl.find(line), std::string::npos) << line;
+    const std::string member = std::string("  ") + (spec.components() == 3 ? "vec3" : "float") + " " +
+                               std::string(spec.name) + ";";
+    EXPECT_NE(glsl.find(member), std::string::npos) << member;
+    EXPECT_EQ(glslUniformName(spec), "P." + std::string(spec.name));
   }
 }

@@ -28,7 +28,7 @@ constexpr int kTilesUnit = KnotTables::kTextureCount;
 
 GpuBoardRenderer::GpuBoardRenderer() : program_(std::make_unique<QOpenGLShaderProgram>()) {
   const QString vertex = "#version 330 core\n" + WoodProgram::shaderFile("image_plane.vert");
-  const QString fragment = "#version 330 core\n" + QString::fromStdString(glslUniformDeclarations()) +
+  const QString fragment = "#version 330 core\n" + WoodProgram::parameterDeclarations() +
                            WoodProgram::shaderFile("knots.glsl") + "\n#line 1 1\n" +
                            WoodProgram::shaderFile("board_knots.frag");
   if (!program_->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||

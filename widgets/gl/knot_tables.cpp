@@ -142,24 +142,24 @@ void KnotTables::bind(QOpenGLShaderProgram& p, int firstUnit) const {
   p.setUniformValue("u_colorRowLength", kRowLength);
   p.setUniformValue("u_tileListRow", kRowLength);
   const KnotSettings& s = settings_;
-  p.setUniformValue("u_knotSpeed", s.speed);
-  p.setUniformValue("u_knotSpeedDecline", s.speedDecline);
-  p.setUniformValue("u_knotSpeedNoise", s.speedNoise);
-  p.setUniformValue("u_knotSmoothStem", s.kStem);
-  p.setUniformValue("u_knotSmoothKnot", s.kKnot);
-  p.setUniformValue("u_knotSmoothTransition", s.kTransition);
-  p.setUniformValue("u_knotReachStart", s.reachStart);
-  p.setUniformValue("u_knotReachEnd", s.reachEnd);
-  p.setUniformValue("u_knotDeadInversion", s.deadInversion);
-  p.setUniformValue("u_knotDeadTransition", s.deadTransition);
-  p.setUniformValue("u_knotDeadSharpening", s.deadSharpening);
-  p.setUniformValue("u_knotButterfly", s.butterfly);
-  p.setUniformValue("u_knotDarkening", toQt(s.darkening));
-  p.setUniformValue("u_knotEdgeSoftness", s.edgeSoftness);
-  p.setUniformValue("u_knotDeadDarkening", s.deadDarkening);
-  p.setUniformValue("u_knotOutlineWidth", s.outlineWidth);
-  p.setUniformValue("u_knotOutlineShade", s.outlineShade);
-  p.setUniformValue("u_knotOutlineNoise", s.outlineNoise);
+  p.setUniformValue("P.knotSpeed", s.speed);
+  p.setUniformValue("P.knotSpeedDecline", s.speedDecline);
+  p.setUniformValue("P.knotSpeedNoise", s.speedNoise);
+  p.setUniformValue("P.knotSmoothStem", s.kStem);
+  p.setUniformValue("P.knotSmoothKnot", s.kKnot);
+  p.setUniformValue("P.knotSmoothTransition", s.kTransition);
+  p.setUniformValue("P.knotReachStart", s.reachStart);
+  p.setUniformValue("P.knotReachEnd", s.reachEnd);
+  p.setUniformValue("P.knotDeadInversion", s.deadInversion);
+  p.setUniformValue("P.knotDeadTransition", s.deadTransition);
+  p.setUniformValue("P.knotDeadSharpening", s.deadSharpening);
+  p.setUniformValue("P.knotButterfly", s.butterfly);
+  p.setUniformValue("P.knotDarkening", toQt(s.darkening));
+  p.setUniformValue("P.knotEdgeSoftness", s.edgeSoftness);
+  p.setUniformValue("P.knotDeadDarkening", s.deadDarkening);
+  p.setUniformValue("P.knotOutlineWidth", s.outlineWidth);
+  p.setUniformValue("P.knotOutlineShade", s.outlineShade);
+  p.setUniformValue("P.knotOutlineNoise", s.outlineNoise);
 }
 
 }  // namespace kerf

@@ -25,10 +25,16 @@ QString WoodProgram::shaderFile(const QString& name) {
   return QString::fromUtf8(file.readAll());
 }
 
+QString WoodProgram::parameterDeclarations() {
+  return shaderFile("kernels/glsl_prelude.glsl") + QString::fromStdString(glslUniformDeclarations());
+}
+
 QString WoodProgram::fragmentSource(const QString& fragmentFile, WoodSource source) {
   QString text = "#version 330 core\n";
   if (source == WoodSource::Board) text += "#define KERF_BOARD_WOOD 1\n";
-  text += QString::fromStdString(glslUniformDeclarations()) + shaderFile("wood_model.glsl");
+  // The model's single-source kernels (core/model/kernels) around the GPU back-end (wood_model.glsl).
+  text += parameterDeclarations() + QString("const int kMaxBlockKnots = %1;\n").arg(kMaxBlockKnotsOnGpu) +
+          shaderFile("kernels/noise.glsl") + shaderFile("wood_model.glsl") + shaderFile("kernels/wood.glsl");
   if (source == WoodSource::Board) text += shaderFile("knots.glsl") + shaderFile("board_wood.glsl");
   return text + "\n#line 1 1\n" + shaderFile(fragmentFile);
 }
@@ -44,17 +50,20 @@ WoodProgram::WoodProgram(const QString& vertexFile, const QString& fragmentFile,
 
 WoodProgram::~WoodProgram() = default;
 
-void WoodProgram::setModel(const WoodModel& model) {
-  const WoodParameters& params = model.params();
+void WoodProgram::setParameters(QOpenGLShaderProgram& program, const WoodParameters& params) {
   const auto schema = parameterSchema();
   for (std::size_t i = 0; i < schema.size(); ++i) {
-    const QByteArray name = "u_" + QByteArray(schema[i].name.data(), static_cast<int>(schema[i].name.size()));
+    const QByteArray name = QByteArray::fromStdString(glslUniformName(schema[i]));
     const auto values = params.components(i);
     if (values.size() == 3)
-      program_.setUniformValue(name.constData(), QVector3D(values[0], values[1], values[2]));
+      program.setUniformValue(name.constData(), QVector3D(values[0], values[1], values[2]));
     else
-      program_.setUniformValue(name.constData(), values[0]);
+      program.setUniformValue(name.constData(), values[0]);
   }
+}
+
+void WoodProgram::setModel(const WoodModel& model) {
+  setParameters(program_, model.params());
   const GrowthField& field = model.field();
   const PithAxis& axis = field.axis();
   program_.setUniformValue("u_axisOrigin", toQt(axis.origin));

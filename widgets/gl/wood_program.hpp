@@ -35,6 +35,12 @@ class WoodProgram {
   // The full fragment-stage source, as compiled (for tests and error messages).
   static QString fragmentSource(const QString& fragmentFile, WoodSource source = WoodSource::Block);
   static QString shaderFile(const QString& name);
+  // kernels/glsl_prelude.glsl and the schema's `uniform WoodParameters P`: what any program that reads
+  // parameters puts after its #version line.
+  static QString parameterDeclarations();
+  // Uploads every schema parameter to P.* of a bound program (members the program does not use are
+  // skipped by OpenGL).
+  static void setParameters(QOpenGLShaderProgram& program, const WoodParameters& params);
 
  private:
   QOpenGLShaderProgram program_;

@@ -1,0 +1,184 @@
+// The procedural wood texture, single source for the core (model/wood_kernels.hpp) and the shaders
+// (widgets/gl/wood_program.cpp): the forward model of Liu et al. 2016 (Sec. 4) as simplified and
+// extended by Mokume Sec. 5.3.1 / A.2.3, evaluated on top of the growth field.
+//
+// Colour follows Beer's law (Liu 4.3): every colour is earlywood * (latewood/earlywood)^t, t being the
+// pigment concentration: 0 in earlywood, 1 in latewood, plus 1D ring noise and 3D mottling (Liu 4.4),
+// fibre streaks, and pores (Liu 4.6) which raise t. Heartwood and sapwood each have an
+// earlywood/latewood pair (Mokume's radial colour maps, A.2.3). Rays (Liu 4.6) blend towards their own
+// colour. A per-face tint models differences between photographed faces (Mokume A.2.3).
+//
+// What each back-end provides (uniforms in GLSL, members in C++):
+//   P                  the schema's parameters (struct WoodParameters, core/params/wood_parameters.def)
+//   u_hashSeed         the seed derived from model.seed
+//   u_axisDirection, u_axisReference, u_axisBinormal   the pith frame (field/pith_axis.hpp)
+//   Cylindrical cylindricalOf(vec3 p, bool withAzimuth)  the pith axis' coordinates of a point
+//   float growthAt(Cylindrical c)                         the growth field G (years)
+//   float mergeKnots(vec3 p, float stemTime, float stemRadius, KERF_OUT(float) darkness)
+//                                                         knots merged into G (Mokume Sec. 5.2.4 Eq. 7)
+
+// Independent sub-seeds for the model's random features, all derived from model.seed.
+KERF_CONST uint kDistortRadial = 1u;
+KERF_CONST uint kDistortTangential = 2u;
+KERF_CONST uint kRingColor = 3u;
+KERF_CONST uint kMottle = 4u;
+KERF_CONST uint kFiber = 5u;
+KERF_CONST uint kPoreColumn = 6u;
+KERF_CONST uint kPoreCell = 7u;
+KERF_CONST uint kRayColumn = 8u;
+KERF_CONST uint kRayCell = 9u;
+
+struct WoodSample {
+  float year;           // growth field value G (years since the pith) at the distorted point
+  float latewood;       // season blend s in [0, 1]: 0 earlywood, 1 latewood
+  float pigment;        // Beer's-law concentration t: colour = early * (late / early)^t
+  float pore;           // pore weight in [0, 1] (Wyvill kernel)
+  float ray;            // ray weight in [0, 1]
+  vec3 color;           // RGB in [0, 1], as stored in 8-bit images (sRGB-encoded)
+  vec3 fiberDirection;  // unit, block frame (the pith direction unless asked for)
+};
+
+float stepSmooth(float a, float b, float x) {
+  if (b <= a) return x < a ? 0.0f : 1.0f;
+  float t = clamp((x - a) / (b - a), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// Wyvill kernel (Liu Sec. 4.6) of a squared distance already divided by the squared influence radius.
+float wyvill(float d2) {
+  float w = 1.0f - d2;
+  return w > 0.0f ? w * w * w : 0.0f;
+}
+
+// Liu Eq. 1: the distortion f(p) = p + m_r r + m_theta theta, returning the undistorted point, and (when
+// asked) the distorted fibre direction J^-1 V with J compressed as in Liu Eq. 3.
+vec3 undistort(vec3 p, Cylindrical c, bool wantFiber, KERF_OUT(vec3) fiberDirection) {
+  float amplitude = P.distortionAmplitude;
+  fiberDirection = u_axisDirection;
+  if (amplitude <= 0.0f) return p;
+  float s = P.distortionScale;
+  float along = P.distortionScale * P.distortionStretch;
+  vec3 q = vec3(c.x / s, c.y / s, c.height / along);
+  vec4 nr = fractalNoise3(q, u_hashSeed + kDistortRadial);
+  vec4 nt = fractalNoise3(q + vec3(31.4f, 27.1f, 8.2f), u_hashSeed + kDistortTangential);
+  if (wantFiber) {
+    // Gradients of m_r, m_theta with respect to p (chain rule through the tree frame).
+    vec3 gr = amplitude * (nr.y / s * u_axisReference + nr.z / s * u_axisBinormal + nr.w / along * u_axisDirection);
+    vec3 gt = amplitude * (nt.y / s * u_axisReference + nt.z / s * u_axisBinormal + nt.w / along * u_axisDirection);
+    float compress = 1.0f / sqrt(1.0f + dot(gr, gr) + dot(gt, gt));  // Liu Eq. 3
+    mat3 jacobian = mat3(1.0f) + compress * (outerProduct(c.radial, gr) + outerProduct(c.tangential, gt));
+    fiberDirection = normalize(inverse(jacobian) * u_axisDirection);
+  }
+  return p + amplitude * nr.x * c.radial + amplitude * nt.x * c.tangential;
+}
+
+// Liu Sec. 4.2: a square wave over the year with a controllable early-to-latewood transition.
+float seasonOf(float year) {
+  float f = year - P.ringOffset - floor(year - P.ringOffset);
+  float latewoodStart = 1.0f - P.latewoodFraction;
+  float rise = stepSmooth(latewoodStart * (1.0f - P.transition), latewoodStart + 1e-4f, f);
+  float fall = 1.0f - stepSmooth(1.0f - P.boundarySoftness, 1.0f, f);
+  return rise * fall;
+}
+
+float poreWeight(Cylindrical c, float season) {
+  float radius = P.poreRadiusEarly + season * (P.poreRadiusLate - P.poreRadiusEarly);
+  float density = P.poreDensityEarly + season * (P.poreDensityLate - P.poreDensityEarly);
+  if (radius <= 0.0f || density <= 0.0f) return 0.0f;
+  // Stratified placement in the cross-section (Liu Sec. 4.6): one candidate pore per cell, placed by a
+  // hash of the cell, kept inside its cell so no neighbour cells need checking.
+  float cell = P.poreCellSize;
+  float len = P.poreLength;
+  float r = min(radius, 0.45f * cell);
+  int i = int(floor(c.x / cell));
+  int j = int(floor(c.y / cell));
+  float stagger = unitOf(hash2(i, j, u_hashSeed + kPoreColumn)) * len;
+  int k = int(floor((c.height + stagger) / len));
+  uint h = hash3(i, j, k, u_hashSeed + kPoreCell);
+  if (unitOf(h) >= density) return 0.0f;
+  float room = 0.5f - r / cell;
+  float cx = (float(i) + 0.5f + room * signedUnitOf(mixHash(h ^ 0x9e3779b9u))) * cell;
+  float cy = (float(j) + 0.5f + room * signedUnitOf(mixHash(h ^ 0x85ebca6bu))) * cell;
+  float halfLength = 0.5f * len * (0.6f + 0.35f * unitOf(mixHash(h ^ 0xc2b2ae35u)));
+  float ch = (float(k) + 0.5f) * len - stagger;
+  float dx = c.x - cx;
+  float dy = c.y - cy;
+  float dh = (c.height - ch) / halfLength;
+  return wyvill((dx * dx + dy * dy) / (r * r) + dh * dh);
+}
+
+float rayWeight(Cylindrical c) {
+  if (P.rayDensity <= 0.0f || P.rayOpacity <= 0.0f) return 0.0f;
+  // Rays run radially: stratified in angle and height (Liu Sec. 4.6), in radial bands of one ray length.
+  float bandLength = P.rayLength;
+  int band = int(floor(c.radius / bandLength));
+  float bandMiddle = (float(band) + 0.5f) * bandLength;
+  int count = max(1, int(round(2.0f * kPi * bandMiddle / P.raySpacing)));
+  float sector = 2.0f * kPi / float(count);
+  int i = min(int((c.azimuth + kPi) / sector), count - 1);
+  float cellHeight = 3.0f * P.rayHeight;
+  float stagger = unitOf(hash2(band, i, u_hashSeed + kRayColumn)) * cellHeight;
+  int k = int(floor((c.height + stagger) / cellHeight));
+  uint h = hash3(band, i, k, u_hashSeed + kRayCell);
+  if (unitOf(h) >= P.rayDensity) return 0.0f;
+  float centerAngle = -kPi + (float(i) + 0.5f + 0.3f * signedUnitOf(mixHash(h ^ 0x9e3779b9u))) * sector;
+  float dAngle = c.azimuth - centerAngle;
+  dAngle -= 2.0f * kPi * round(dAngle / (2.0f * kPi));
+  float centerHeight = (float(k) + 0.5f + 0.15f * signedUnitOf(mixHash(h ^ 0x85ebca6bu))) * cellHeight - stagger;
+  float dt = c.radius * dAngle / P.rayWidth;
+  float dh = (c.height - centerHeight) / P.rayHeight;
+  float q = c.radius / bandLength - float(band);  // taper: rays begin and end inside their band
+  float taper = stepSmooth(0.0f, 0.12f, q) * (1.0f - stepSmooth(0.88f, 1.0f, q));
+  return wyvill(dt * dt + dh * dh) * taper;
+}
+
+// Only the growth time at the (distorted) point: WoodSample.year without the texture's cost.
+float woodYear(vec3 p) {
+  vec3 unusedFiber;
+  vec3 u = undistort(p, cylindricalOf(p, false), false, unusedFiber);
+  Cylindrical c = cylindricalOf(u, true);
+  float darkness;
+  return mergeKnots(u, growthAt(c), c.radius, darkness);
+}
+
+// faceIndex 0..5 (A..F) applies that face's tint; -1 (cuts, volumes) applies none.
+WoodSample evaluateWood(vec3 p, int faceIndex, bool wantFiber) {
+  WoodSample s;
+  Cylindrical distorted = cylindricalOf(p, false);  // undistort needs no azimuth
+  vec3 u = undistort(p, distorted, wantFiber, s.fiberDirection);
+  Cylindrical c = cylindricalOf(u, true);
+  float knotDarkness;
+  s.year = mergeKnots(u, growthAt(c), c.radius, knotDarkness);  // Mokume Sec. 5.2.4 Eq. 7
+  s.latewood = seasonOf(s.year);
+  s.pore = poreWeight(c, s.latewood);
+  s.ray = rayWeight(c);
+
+  // Pigment concentration t (Beer's law, Liu Sec. 4.3-4.4).
+  float t = s.latewood;
+  t += 0.5f * P.ringColorVariation * valueNoise1(s.year, u_hashSeed + kRingColor);
+  if (P.mottleStrength > 0.0f) {
+    float m = P.mottleScale;
+    t += 0.5f * P.mottleStrength * fractalNoise3(vec3(c.x / m, c.y / m, c.height / (4.0f * m)), u_hashSeed + kMottle).x;
+  }
+  if (P.fiberStrength > 0.0f) {
+    vec3 q = vec3(c.x / P.fiberWidth, c.y / P.fiberWidth, c.height / P.fiberLength);
+    t += 0.5f * P.fiberStrength * valueNoise3(q, u_hashSeed + kFiber).x;
+  }
+  t += P.poreDarkness * s.pore;
+  s.pigment = t;
+
+  float sap = stepSmooth(P.sapwoodStart - 0.5f * P.sapwoodTransition, P.sapwoodStart + 0.5f * P.sapwoodTransition, s.year);
+  vec3 early = max(mix(P.earlywoodColor, P.sapwoodEarlywoodColor, sap), vec3(1e-3f));
+  vec3 late = max(mix(P.latewoodColor, P.sapwoodLatewoodColor, sap), vec3(1e-3f));
+  vec3 color = early * pow(late / early, vec3(t));
+  color = mix(color, P.rayColor, P.rayOpacity * s.ray);
+  color -= knotDarkness * P.knotDarkening;  // Larsson et al. 2022 Sec. 4.3
+  if (faceIndex == 0) color *= P.faceTintA;
+  else if (faceIndex == 1) color *= P.faceTintB;
+  else if (faceIndex == 2) color *= P.faceTintC;
+  else if (faceIndex == 3) color *= P.faceTintD;
+  else if (faceIndex == 4) color *= P.faceTintE;
+  else if (faceIndex == 5) color *= P.faceTintF;
+  s.color = clamp(color, 0.0f, 1.0f);
+  return s;
+}
