@@ -122,7 +122,7 @@ void main() {
 #ifdef KERF_BOARD_WOOD
     WoodSample s = boardWood(p);  // a board cut from a log (board_wood.glsl)
 #else
-    WoodSample s = evaluateWood(p, u_pass == 1 || u_pass == 3 ? -1 : u_faceIndex);
+    WoodSample s = evaluateWood(p, u_pass == 1 || u_pass == 3 ? -1 : u_faceIndex, true);  // the sheen needs the fibres
 #endif
     albedo = s.color;
     fiber = s.fiberDirection;

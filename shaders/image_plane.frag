@@ -21,6 +21,6 @@ void main() {
 #ifdef KERF_BOARD_WOOD
   fragColor = vec4(boardWood(p).color, 1.0);  // a board cut from a log (board_wood.glsl)
 #else
-  fragColor = vec4(evaluateWood(p, u_faceIndex).color, 1.0);
+  fragColor = vec4(evaluateWood(p, u_faceIndex, false).color, 1.0);
 #endif
 }
