@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "builtin_presets.hpp"
+#include "params/builtin_presets.hpp"
 
 namespace kerf {
 namespace {

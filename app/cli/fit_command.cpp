@@ -11,6 +11,7 @@
 #include "fit/growth_field_fit.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
+#include "params/builtin_presets.hpp"
 #include "util/error.hpp"
 
 namespace kerf::cli {
@@ -28,6 +29,7 @@ Command addFitCommand(CLI::App& app) {
     bool ignoreAnatomy = false;
     bool ignoreTraces = false;
     double anatomyWeight = 1.0;
+    std::string species;
   };
   auto o = std::make_shared<Options>();
   fit->add_option("SAMPLE", o->sample,
@@ -48,6 +50,10 @@ Command addFitCommand(CLI::App& app) {
   fit->add_option("--anatomy-weight", o->anatomyWeight,
                   "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
       ->check(CLI::Range(0.0, 100.0));
+  fit->add_option("--species", o->species,
+                  "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri or "
+                  "nara (kerf-cli params --presets lists them). Default: a sample folder named by its Mokume "
+                  "code (CN03) gets that species; a project keeps its own wood; 'none' keeps the defaults");
   return {
       fit, [o](Context& context) {
         const fs::path sample = o->sample;
@@ -63,6 +69,22 @@ Command addFitCommand(CLI::App& app) {
             project = projectFromSampleFolder(folder);
           } catch (const InputError&) {
           }
+        }
+
+        // The species: what the texture starts from, before the colours are fitted to the photos.
+        const Preset* species = nullptr;
+        if (!o->species.empty() && o->species != "none") {
+          species = builtInPreset(o->species);
+          if (!species) throw InputError("--species " + o->species + ": no such species preset");
+        } else if (o->species.empty() && !isProject) {
+          fs::path name = fs::absolute(folder).lexically_normal();
+          if (name.filename().empty()) name = name.parent_path();  // "CN03/"
+          species = builtInPresetForSampleName(name.filename().string());
+        }
+        if (species) {
+          project.params = species->applyTo(project.params);
+          std::printf("species: %s (%s)%s\n", species->name.c_str(), species->id.c_str(),
+                      o->species.empty() ? ", from the sample's name; --species to choose another" : "");
         }
 
         GrowthFieldFitInput input;

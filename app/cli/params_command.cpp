@@ -1,15 +1,29 @@
-// params: the parameter schema as JSON.
+// params: the parameter schema (or, with --presets, the built-in species) as JSON.
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "params/builtin_presets.hpp"
 #include "params/parameter_schema.hpp"
 
 namespace kerf::cli {
 
 Command addParamsCommand(CLI::App& app) {
   auto* params = app.add_subcommand("params", "Print the parameter schema as JSON");
-  return {params, [](Context&) {
+  auto presets = std::make_shared<bool>(false);
+  params->add_flag("--presets", *presets, "Print the built-in species presets instead (id, name, Mokume code)");
+  return {params, [presets](Context&) {
+            if (*presets) {
+              nlohmann::ordered_json out = nlohmann::ordered_json::array();
+              for (const Preset& preset : builtInPresets())
+                out.push_back({{"id", preset.id},
+                               {"name", preset.name},
+                               {"latin", preset.latin},
+                               {"mokume_code", preset.mokumeCode},
+                               {"description", preset.description}});
+              std::cout << out.dump(2) << "\n";
+              return;
+            }
             nlohmann::ordered_json out = nlohmann::ordered_json::array();
             for (const ParamSpec& spec : parameterSchema()) {
               nlohmann::ordered_json def =

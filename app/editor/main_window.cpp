@@ -20,7 +20,7 @@
 #include <QVBoxLayout>
 
 #include "autosave.hpp"
-#include "builtin_presets.hpp"
+#include "params/builtin_presets.hpp"
 #include "cut_plane_controls.hpp"
 #include "cut_view.hpp"
 #include "document.hpp"
@@ -350,7 +350,7 @@ void MainWindow::toggleView() {
 }
 
 void MainWindow::applyPreset(const QString& presetId) {
-  const Preset* preset = builtInPreset(presetId);
+  const Preset* preset = builtInPreset(presetId.toStdString());
   if (!preset) return;
   try {
     document_->applyParameters(preset->applyTo(document_->project().params),

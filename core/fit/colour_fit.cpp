@@ -15,17 +15,19 @@ namespace kerf {
 
 namespace {
 
-constexpr int kSub = 4;  // model points per sample (2 x 2)
-
-// What a sample point's colour depends on besides the fitted parameters (fixed during the fit).
+// What a sample point's colour depends on besides the fitted parameters (fixed during the fit). One
+// photo point and the model at that same point: averaging the photo over cells (as an earlier version
+// did) mixes earlywood and latewood and pulls the fit to one mean colour (issue 16).
 struct Sample {
   int face = 0;
-  double pigment[kSub], year[kSub], ray[kSub];
-  double target[3];  // the photo's mean colour over the sample's cell
+  double pigment = 0;       // Beer's-law concentration t without the ring profile
+  double year = 0, ray = 0;
+  int profileKnot = 0;      // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
+  double profileWeight[4] = {0, 0, 0, 0};
+  double target[3] = {0, 0, 0};  // the photo's colour at the point
 };
 
-// The colour model of WoodMaterial::evaluate (core/material/wood_material.cpp), as a function of the
-// fitted parameters only, averaged over the sample's model points.
+// The colour model of kernels/wood.glsl's evaluateWood as a function of the fitted parameters only.
 struct ColourModel {
   const Sample* s;
   glm::dvec3 rayColor;
@@ -33,22 +35,21 @@ struct ColourModel {
 
   template <class T>
   void operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
-                  const T* tint, T* out) const {
+                  const T* tint, const T* profile, T* out) const {
     using std::exp;
     using std::log;
-    for (int c = 0; c < 3; ++c) out[c] = T(0);
-    for (int k = 0; k < kSub; ++k) {
-      T x = (T(s->year[k]) - (sap[0] - 0.5 * sap[1])) / sap[1];
-      if (x < T(0)) x = T(0);
-      if (x > T(1)) x = T(1);
-      const T blend = x * x * (T(3) - T(2) * x);
-      const double w = rayOpacity * s->ray[k];
-      for (int c = 0; c < 3; ++c) {
-        const T e = early[c] + blend * (sapEarly[c] - early[c]);
-        const T l = late[c] + blend * (sapLate[c] - late[c]);
-        const T beer = e * exp(T(s->pigment[k]) * log(l / e));
-        out[c] += tint[c] * ((1.0 - w) * beer + w * rayColor[c]) / double(kSub);
-      }
+    T x = (T(s->year) - (sap[0] - 0.5 * sap[1])) / sap[1];
+    if (x < T(0)) x = T(0);
+    if (x > T(1)) x = T(1);
+    const T blend = x * x * (T(3) - T(2) * x);
+    T t = T(s->pigment);
+    for (int i = 0; i < 4; ++i) t += s->profileWeight[i] * profile[(s->profileKnot + 7 + i) % 8];
+    const double w = rayOpacity * s->ray;
+    for (int c = 0; c < 3; ++c) {
+      const T e = early[c] + blend * (sapEarly[c] - early[c]);
+      const T l = late[c] + blend * (sapLate[c] - late[c]);
+      const T beer = e * exp(t * log(l / e));
+      out[c] = tint[c] * ((1.0 - w) * beer + w * rayColor[c]);
     }
   }
 };
@@ -58,10 +59,24 @@ struct SampleResidual {
   double weight;
   template <class T>
   bool operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
-                  const T* tint, T* residual) const {
+                  const T* tint, const T* profile, T* residual) const {
     T colour[3];
-    model(early, late, sapEarly, sapLate, sap, tint, colour);
+    model(early, late, sapEarly, sapLate, sap, tint, profile, colour);
     for (int c = 0; c < 3; ++c) residual[c] = weight * (colour[c] - model.s->target[c]);
+    return true;
+  }
+};
+
+// Keeps the ring profile smooth from knot to knot (periodic second differences) and small: the photos
+// decide its shape, not the noise of single points.
+struct ProfilePrior {
+  double smooth, small;
+  template <class T>
+  bool operator()(const T* profile, T* residual) const {
+    for (int k = 0; k < 8; ++k) {
+      residual[k] = smooth * (profile[(k + 7) % 8] - 2.0 * profile[k] + profile[(k + 1) % 8]);
+      residual[8 + k] = small * profile[k];
+    }
     return true;
   }
 };
@@ -90,8 +105,9 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   const WoodModel model(block, params, rates);
   const int n = std::max(2, options.samplesPerSide);
 
-  // Samples: an n x n grid of cells per face; the photo's mean colour over each cell, and the model's
-  // pigment, growth time and ray weight at 2 x 2 points inside it.
+  // Samples: an n x n grid of points per face; the photo's colour over a window of about 0.15 mm around
+  // each (a photo pixel of the usual 256 px per 40 mm) and the model at the same point.
+  const WoodMaterial& material = model.material();
   std::vector<Sample> samples;
   for (FaceId face : kAllFaces) {
     const Image& photo = photos[faceIndex(face)];
@@ -99,6 +115,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     if (photo.channels < 3)
       throw InputError("the colour fit needs colour photos (face " + std::string(1, faceLetter(face)) +
                        " has one channel)");
+    const int window = std::max(1, static_cast<int>(std::lround(photo.width / 256.0)));
     const std::size_t first = samples.size();
     samples.resize(first + static_cast<std::size_t>(n) * n);
     parallelRows(
@@ -107,20 +124,20 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
           for (int col = 0; col < n; ++col) {
             Sample& s = samples[first + static_cast<std::size_t>(row) * n + col];
             s.face = faceIndex(face);
-            const int x0 = col * photo.width / n, x1 = std::max(x0 + 1, (col + 1) * photo.width / n);
-            const int y0 = row * photo.height / n, y1 = std::max(y0 + 1, (row + 1) * photo.height / n);
+            const glm::vec2 at((col + 0.5f) * photo.width / n, (row + 0.5f) * photo.height / n);
+            const int x0 = std::clamp(static_cast<int>(at.x) - window / 2, 0, photo.width - window);
+            const int y0 = std::clamp(static_cast<int>(at.y) - window / 2, 0, photo.height - window);
             double sum[3] = {0, 0, 0};
-            for (int y = y0; y < y1; ++y)
-              for (int x = x0; x < x1; ++x)
+            for (int y = y0; y < y0 + window; ++y)
+              for (int x = x0; x < x0 + window; ++x)
                 for (int c = 0; c < 3; ++c) sum[c] += photo.pixel(x, y)[c];
-            const double count = static_cast<double>(x1 - x0) * (y1 - y0);
-            for (int c = 0; c < 3; ++c) s.target[c] = sum[c] / count;
-            for (int k = 0; k < kSub; ++k) {
-              const glm::vec2 at(x0 + (x1 - x0) * (0.25f + 0.5f * (k % 2)),
-                                 y0 + (y1 - y0) * (0.25f + 0.5f * (k / 2)));
-              const WoodSample w = model.evaluate(block.imageToBlock(face, at, {photo.width, photo.height}));
-              s.pigment[k] = w.pigment, s.year[k] = w.year, s.ray[k] = w.ray;
-            }
+            for (int c = 0; c < 3; ++c) s.target[c] = sum[c] / (double(window) * window);
+            const WoodSample w = model.evaluate(block.imageToBlock(face, at, {photo.width, photo.height}));
+            glm::vec4 weights;
+            s.profileKnot = material.ringProfileCell(w.year, weights);
+            for (int i = 0; i < 4; ++i) s.profileWeight[i] = weights[i];
+            s.pigment = w.pigment - material.ringProfile(w.year);
+            s.year = w.year, s.ray = w.ray;
           }
         },
         progress);
@@ -136,6 +153,12 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
                                                &WoodParameters::faceTintC, &WoodParameters::faceTintD,
                                                &WoodParameters::faceTintE, &WoodParameters::faceTintF};
   for (int f = 0; f < 6; ++f) load(params.*tints[f], tint[f]);
+  float WoodParameters::*const knots[8] = {&WoodParameters::ringProfile0, &WoodParameters::ringProfile1,
+                                           &WoodParameters::ringProfile2, &WoodParameters::ringProfile3,
+                                           &WoodParameters::ringProfile4, &WoodParameters::ringProfile5,
+                                           &WoodParameters::ringProfile6, &WoodParameters::ringProfile7};
+  double profile[8];
+  for (int k = 0; k < 8; ++k) profile[k] = params.*knots[k];
 
   const glm::dvec3 rayColor = toD(params.rayColor);
   const auto l1PerFace = [&](std::array<double, 6>& out) {
@@ -143,7 +166,8 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     out.fill(0.0);
     for (const Sample& s : samples) {
       double colour[3];
-      ColourModel{&s, rayColor, params.rayOpacity}(early, late, sapEarly, sapLate, sap, tint[s.face], colour);
+      ColourModel{&s, rayColor, params.rayOpacity}(early, late, sapEarly, sapLate, sap, tint[s.face], profile,
+                                                   colour);
       for (int c = 0; c < 3; ++c)
         out[s.face] += std::abs(std::clamp(colour[c], 0.0, 1.0) - s.target[c]) / 3.0;
       count[s.face] += 1;
@@ -156,10 +180,18 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   ceres::Problem problem;
   const double weight = 1.0 / std::sqrt(static_cast<double>(samples.size()));
   for (const Sample& s : samples)
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SampleResidual, 3, 3, 3, 3, 3, 2, 3>(
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SampleResidual, 3, 3, 3, 3, 3, 2, 3, 8>(
                                  new SampleResidual{{&s, rayColor, params.rayOpacity}, weight}),
                              new ceres::SoftLOneLoss(options.robustScale * weight), early, late, sapEarly,
-                             sapLate, sap, tint[s.face]);
+                             sapLate, sap, tint[s.face], profile);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ProfilePrior, 16, 8>(
+                               new ProfilePrior{options.profileSmoothness, options.profileSmallness}),
+                           nullptr, profile);
+  for (int k = 0; k < 8; ++k) {
+    problem.SetParameterLowerBound(profile, k, -10.0);
+    problem.SetParameterUpperBound(profile, k, 10.0);
+  }
+  if (!options.fitRingProfile) problem.SetParameterBlockConstant(profile);
   for (int f = 0; f < 6; ++f) {
     if (photos[f].empty()) continue;
     problem.AddResidualBlock(
@@ -182,7 +214,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   if (!options.fitSapwood) problem.SetParameterBlockConstant(sap);
 
   ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;  // 32 parameters
+  so.linear_solver_type = ceres::DENSE_QR;  // 40 parameters
   so.max_num_iterations = options.maxIterations;
   so.num_threads = 1;  // deterministic
   CeresProgress callback(progress, options.maxIterations, 0.3, 1.0);
@@ -198,6 +230,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   out.sapwoodEarlywoodColor = store(sapEarly), out.sapwoodLatewoodColor = store(sapLate);
   out.sapwoodStart = static_cast<float>(sap[0]), out.sapwoodTransition = static_cast<float>(sap[1]);
   for (int f = 0; f < 6; ++f) out.*tints[f] = store(tint[f]);
+  for (int k = 0; k < 8; ++k) out.*knots[k] = static_cast<float>(profile[k]);
   validate(out);
   result.params = out;
   result.samples = static_cast<int>(samples.size());

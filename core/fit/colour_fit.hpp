@@ -4,12 +4,18 @@
 // are fitted to the face photos with a robust L1-like loss.
 //
 // Kerf's colour model has the parameters of the one schema (not the authors' free 128-entry colour bar):
-// heartwood and sapwood earlywood/latewood colours, the heart-to-sapwood radius and blend, and a colour
-// multiplier per face (faces.tint_*). Everything else the colour depends on - the pigment concentration t
-// of Beer's law (season, ring-to-ring variation, mottling, fibres, pores), the growth time and the rays -
-// does not depend on these parameters, so it is evaluated once per sample point, and the fit itself
-// (Ceres, automatic differentiation, soft-L1) only re-mixes colours: colour = tint_face * mix(E (L/E)^t,
-// ray colour, ray opacity * ray), E and L blended from heartwood to sapwood by the growth time.
+// heartwood and sapwood earlywood/latewood colours, the heart-to-sapwood radius and blend, a colour
+// multiplier per face (faces.tint_*), and the ring profile (rings.profile_*: extra pigment at eight points
+// of the year, the base colour as a function of the growth value of Mokume Sec. 5.3.2). Everything else
+// the colour depends on - the pigment concentration t of Beer's law (season, ring-to-ring variation,
+// mottling, fibres, pores), the growth time and the rays - does not depend on these parameters, so it is
+// evaluated once per sample point, and the fit itself (Ceres, automatic differentiation, soft-L1) only
+// re-mixes colours: colour = tint_face * mix(E (L/E)^(t + profile(year)), ray colour, ray opacity * ray),
+// E and L blended from heartwood to sapwood by the growth time.
+// Photo and model are compared point by point (not cell means, which mix early- and latewood and drive
+// the colours to one mean: the flat beige of issue 16). The ring profile is where the fit learns the
+// ring's shading; it is smooth from knot to knot, and the soft-L1 keeps points a fraction of a
+// millimetre off their ring from washing it out.
 // The face tints and the wood colours trade off (a brighter wood under darker tints looks the same); a
 // weak penalty on (tint - 1)^2 fixes that scale, as the authors' 10 * mean(face_cols^2) does beside their
 // L1 term (Kerf's data term is squared, hence the smaller weight).
@@ -24,16 +30,18 @@
 namespace kerf {
 
 struct ColourFitOptions {
-  int samplesPerSide = 32;  // sample points per face side (each the mean of 2 x 2 model points)
+  int samplesPerSide = 96;  // sample points per face side (photo and model at the same point)
   int maxIterations = 50;
   double robustScale = 0.05;  // soft-L1 scale, colour units (0..1)
   double tintWeight = 0.02;   // only fixes the scale between wood colours and tints
   bool fitSapwood = true;     // the heart-to-sapwood radius and blend (needs both on the faces)
+  bool fitRingProfile = true;  // rings.profile_*: the shading within a year (Mokume 5.3.2 base colour)
+  double profileSmoothness = 0.02, profileSmallness = 0.005;  // priors on the ring profile's knots
 };
 
 struct ColourFitResult {
   WoodParameters params;  // the input with color.* (earlywood, latewood, sapwood pair, sapwood start and
-                          // blend) and faces.tint_* replaced
+                          // blend), rings.profile_* and faces.tint_* replaced
   std::array<double, 6> l1Before{}, l1After{};  // mean |model - photo| per face (colour units, 0..1);
                                                 // 0 where a face has no photo
   int samples = 0;

@@ -8,6 +8,7 @@
 // sections. This class owns the CPU back-end of it.
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "field/block_knots.hpp"
 #include "field/growth_field.hpp"
@@ -32,6 +33,10 @@ class WoodMaterial {
   }
   // Only the growth time at the (distorted) point: WoodSample::year without the texture's cost.
   float year(glm::vec3 pMm) const { return kernels_.woodYear(pMm); }
+  // The fitted ring profile (rings.profile_*) at a growth time: the pigment it adds, and which of its
+  // eight knots (k-1 .. k+2, modulo 8) weigh how much there.
+  float ringProfile(float year) const { return kernels_.ringProfileAt(year); }
+  int ringProfileCell(float year, glm::vec4& weights) const { return kernels_.ringProfileCell(year, weights); }
 
   const GrowthField& field() const { return field_; }
   // The hash seed derived from model.seed (the shaders take it as the uniform u_hashSeed).

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "io/project.hpp"
+#include "params/builtin_presets.hpp"
 #include "params/presets.hpp"
 #include "util/error.hpp"
 
@@ -241,4 +242,27 @@ TEST(Presets, FolderWithValidPresetsLoads) {
   EXPECT_EQ(presets[1].name, "Zebra-like");
   EXPECT_EQ(findPreset(presets, "a_wood"), &presets[1]);
   EXPECT_EQ(findPreset(presets, "nope"), nullptr);
+}
+
+// The presets compiled into the core (params/builtin_presets.hpp) are the files, all of them.
+TEST(Presets, BuiltInPresetsAreTheFiles) {
+  const auto files = loadPresets(kPresetDir);
+  const auto& builtIn = builtInPresets();
+  ASSERT_EQ(builtIn.size(), files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    EXPECT_EQ(builtIn[i].id, files[i].id);
+    EXPECT_EQ(presetToJson(builtIn[i]), presetToJson(files[i]));
+  }
+}
+
+// Mokume samples are named by their species code and a number (Table 1): CN03 is chestnut (kuri).
+TEST(Presets, SpeciesOfAMokumeSampleFromItsName) {
+  ASSERT_NE(builtInPresetForSampleName("CN03"), nullptr);
+  EXPECT_EQ(builtInPresetForSampleName("CN03")->id, "kuri");
+  EXPECT_EQ(builtInPresetForSampleName("h11")->id, "hinoki");
+  EXPECT_EQ(builtInPresetForSampleName("BW2")->id, "black_walnut");
+  EXPECT_EQ(builtInPresetForSampleName("CN"), nullptr);       // no number: not a sample name
+  EXPECT_EQ(builtInPresetForSampleName("XY03"), nullptr);     // no such species
+  EXPECT_EQ(builtInPresetForSampleName("my_block"), nullptr);
+  EXPECT_EQ(builtInPresetForSampleName(""), nullptr);
 }

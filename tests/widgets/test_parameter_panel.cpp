@@ -23,7 +23,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "builtin_presets.hpp"
+#include "params/builtin_presets.hpp"
 #include "cut_plane_controls.hpp"
 #include "parameter_panel.hpp"
 

@@ -81,30 +81,84 @@ float seasonOf(float year) {
   return rise * fall;
 }
 
+// The fitted ring profile (Mokume Sec. 5.3.2's base colour as a function of the growth value): extra
+// pigment at eight points of the year, interpolated periodically (Catmull-Rom), so the fit can give the
+// ring the shading the photos show - e.g. oak's dark band of earlywood pores - beyond the square wave.
+float ringProfileKnot(int k) {
+  int i = k - 8 * int(floor(float(k) / 8.0f));
+  if (i == 0) return P.ringProfile0;
+  if (i == 1) return P.ringProfile1;
+  if (i == 2) return P.ringProfile2;
+  if (i == 3) return P.ringProfile3;
+  if (i == 4) return P.ringProfile4;
+  if (i == 5) return P.ringProfile5;
+  if (i == 6) return P.ringProfile6;
+  return P.ringProfile7;
+}
+
+// Uniform Catmull-Rom weights of the knots k-1, k, k+1, k+2 at t in [0, 1) between knots k and k+1.
+vec4 catmullRomWeights(float t) {
+  return 0.5f * vec4(t * ((2.0f - t) * t - 1.0f), t * t * (3.0f * t - 5.0f) + 2.0f,
+                     t * ((4.0f - 3.0f * t) * t + 1.0f), t * t * (t - 1.0f));
+}
+
+// The knot k before the point of the year at `year`, and the weights of knots k-1 .. k+2 there.
+int ringProfileCell(float year, KERF_OUT(vec4) weights) {
+  float x = 8.0f * (year - P.ringOffset - floor(year - P.ringOffset));
+  int k = min(int(floor(x)), 7);
+  weights = catmullRomWeights(x - float(k));
+  return k;
+}
+
+float ringProfileAt(float year) {
+  vec4 w;
+  int k = ringProfileCell(year, w);
+  return w.x * ringProfileKnot(k - 1) + w.y * ringProfileKnot(k) + w.z * ringProfileKnot(k + 1) +
+         w.w * ringProfileKnot(k + 2);
+}
+
+// Liu Sec. 4.6 / Mokume A.2.3: vessels are tubes along the fibres - dots on end grain, streaks of a few
+// mm on long grain. Placement without a lattice (issue 16): each cross-section cell holds up to
+// kPoresPerCell vessel columns anywhere inside it (so neighbours can crowd or leave gaps, as in real
+// wood), each column is split into vessel segments of random length and stagger along the grain, and
+// every segment has its own radius. A pore can reach into the neighbouring cells, so the 3 x 3 cells
+// around the point are searched; the radius is capped at one cell for that.
+KERF_CONST int kPoresPerCell = 2;
+
 float poreWeight(Cylindrical c, float season) {
   float radius = P.poreRadiusEarly + season * (P.poreRadiusLate - P.poreRadiusEarly);
   float density = P.poreDensityEarly + season * (P.poreDensityLate - P.poreDensityEarly);
   if (radius <= 0.0f || density <= 0.0f) return 0.0f;
-  // Stratified placement in the cross-section (Liu Sec. 4.6): one candidate pore per cell, placed by a
-  // hash of the cell, kept inside its cell so no neighbour cells need checking.
   float cell = P.poreCellSize;
-  float len = P.poreLength;
-  float r = min(radius, 0.45f * cell);
-  int i = int(floor(c.x / cell));
-  int j = int(floor(c.y / cell));
-  float stagger = unitOf(hash2(i, j, u_hashSeed + kPoreColumn)) * len;
-  int k = int(floor((c.height + stagger) / len));
-  uint h = hash3(i, j, k, u_hashSeed + kPoreCell);
-  if (unitOf(h) >= density) return 0.0f;
-  float room = 0.5f - r / cell;
-  float cx = (float(i) + 0.5f + room * signedUnitOf(mixHash(h ^ 0x9e3779b9u))) * cell;
-  float cy = (float(j) + 0.5f + room * signedUnitOf(mixHash(h ^ 0x85ebca6bu))) * cell;
-  float halfLength = 0.5f * len * (0.6f + 0.35f * unitOf(mixHash(h ^ 0xc2b2ae35u)));
-  float ch = (float(k) + 0.5f) * len - stagger;
-  float dx = c.x - cx;
-  float dy = c.y - cy;
-  float dh = (c.height - ch) / halfLength;
-  return wyvill((dx * dx + dy * dy) / (r * r) + dh * dh);
+  int ci = int(floor(c.x / cell));
+  int cj = int(floor(c.y / cell));
+  float weight = 0.0f;
+  for (int di = -1; di <= 1; ++di) {
+    for (int dj = -1; dj <= 1; ++dj) {
+      int i = ci + di;
+      int j = cj + dj;
+      uint column = hash2(i, j, u_hashSeed + kPoreColumn);
+      for (int n = 0; n < kPoresPerCell; ++n) {
+        uint h = mixHash(column + uint(n) * 0x9e3779b9u);
+        float cx = (float(i) + unitOf(mixHash(h ^ 0x85ebca6bu))) * cell;
+        float cy = (float(j) + unitOf(mixHash(h ^ 0xc2b2ae35u))) * cell;
+        float dx = c.x - cx;
+        float dy = c.y - cy;
+        float d2 = dx * dx + dy * dy;
+        if (d2 >= cell * cell) continue;
+        float len = P.poreLength * (0.5f + unitOf(mixHash(h ^ 0x27d4eb2fu)));
+        float stagger = unitOf(mixHash(h ^ 0x165667b1u)) * len;
+        int k = int(floor((c.height + stagger) / len));
+        uint segment = hash3(i * kPoresPerCell + n, j, k, u_hashSeed + kPoreCell);
+        if (unitOf(segment) >= density / float(kPoresPerCell)) continue;  // on average `density` pores a cell
+        float r = min(radius * (0.7f + 0.6f * unitOf(mixHash(segment ^ 0x9e3779b9u))), cell);
+        float halfLength = 0.5f * len * (0.6f + 0.35f * unitOf(mixHash(segment ^ 0xc2b2ae35u)));
+        float dh = (c.height - ((float(k) + 0.5f) * len - stagger)) / halfLength;
+        weight = max(weight, wyvill(d2 / (r * r) + dh * dh));
+      }
+    }
+  }
+  return weight;
 }
 
 float rayWeight(Cylindrical c) {
@@ -121,7 +175,7 @@ float rayWeight(Cylindrical c) {
   int k = int(floor((c.height + stagger) / cellHeight));
   uint h = hash3(band, i, k, u_hashSeed + kRayCell);
   if (unitOf(h) >= P.rayDensity) return 0.0f;
-  float centerAngle = -kPi + (float(i) + 0.5f + 0.3f * signedUnitOf(mixHash(h ^ 0x9e3779b9u))) * sector;
+  float centerAngle = -kPi + (float(i) + 0.5f + 0.45f * signedUnitOf(mixHash(h ^ 0x9e3779b9u))) * sector;
   float dAngle = c.azimuth - centerAngle;
   dAngle -= 2.0f * kPi * round(dAngle / (2.0f * kPi));
   float centerHeight = (float(k) + 0.5f + 0.15f * signedUnitOf(mixHash(h ^ 0x85ebca6bu))) * cellHeight - stagger;
@@ -154,7 +208,7 @@ WoodSample evaluateWood(vec3 p, int faceIndex, bool wantFiber) {
   s.ray = rayWeight(c);
 
   // Pigment concentration t (Beer's law, Liu Sec. 4.3-4.4).
-  float t = s.latewood;
+  float t = s.latewood + ringProfileAt(s.year);
   t += 0.5f * P.ringColorVariation * valueNoise1(s.year, u_hashSeed + kRingColor);
   if (P.mottleStrength > 0.0f) {
     float m = P.mottleScale;
