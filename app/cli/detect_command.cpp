@@ -48,7 +48,7 @@ Command addDetectCommand(CLI::App& app) {
           throw InputError(o->document + " has no photo for face " + missing +
                            " (expected <face>_col.png; --allow-missing skips those faces)");
         if (!project.heldOutFaces.empty())
-          std::printf("held out (the project's held_out_faces): face %s, not detected\n",
+          std::printf("held out (the project's held_out_faces): %s, not detected\n",
                       project.heldOutFaces.letters().c_str());
         createOutputFolder(o->out);
         const ClassicalRingDetector detector;

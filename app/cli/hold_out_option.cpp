@@ -20,8 +20,9 @@ FaceSet heldOutFacesFromOption(const std::vector<std::string>& values) {
   FaceSet faces;
   for (const std::string& value : values) {
     try {
-      if (value.empty()) throw InputError("the value is empty; give face letters A..F");
-      faces |= parseFaceSet(value);
+      const FaceSet these = parseFaceSet(value);
+      if (these.empty()) throw InputError("no face letter given (faces are A..F)");
+      faces |= these;
     } catch (const InputError& e) {
       throw InputError(std::string(kHoldOutFaceOption) + " " + value + ": " + e.what());
     }
