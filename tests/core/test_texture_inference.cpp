@@ -43,6 +43,16 @@ TextureInferenceOptions fastOptions() {
   return options;
 }
 
+// Smaller still, for comparing runs with each other: one 64 px crop per face, one sweep, no coarse grid.
+TextureInferenceOptions comparisonOptions() {
+  TextureInferenceOptions options = fastOptions();
+  options.coarseSearch = false;
+  options.search.maxSweeps = 1;
+  options.loss.cropsPerFace = 1;
+  options.loss.cropSize = 64;
+  return options;
+}
+
 double relativeError(float value, float truth) {
   return std::abs(value - truth) / truth;
 }
@@ -82,11 +92,7 @@ TEST(TextureInference, RecoversKnownDetailOfASyntheticBlock) {
 
 TEST(TextureInference, IsDeterministic) {
   const test::TextureSynthetic& s = synthetic();
-  TextureInferenceOptions options = fastOptions();
-  options.coarseSearch = false;
-  options.search.maxSweeps = 1;
-  options.loss.cropsPerFace = 1;
-  options.loss.cropSize = 64;
+  TextureInferenceOptions options = comparisonOptions();
   const WoodParameters start = perturbedStart(s.truth.params);
   const TextureInferenceResult a = inferTexture(s.truth.block, start, s.rates, s.photos, options);
   const TextureInferenceResult b = inferTexture(s.truth.block, start, s.rates, s.photos, options);
@@ -98,11 +104,7 @@ TEST(TextureInference, IsDeterministic) {
 // change nothing when C is held out, and change the result when it is not.
 TEST(TextureInference, UsesNothingOfAHeldOutPhoto) {
   const test::TextureSynthetic& s = synthetic();
-  TextureInferenceOptions options = fastOptions();
-  options.coarseSearch = false;
-  options.search.maxSweeps = 1;
-  options.loss.cropsPerFace = 1;
-  options.loss.cropSize = 64;
+  TextureInferenceOptions options = comparisonOptions();
   options.refitColours = true;  // the colour step reads the photos too
   options.heldOut.insert(FaceId::C);
   const int c = faceIndex(FaceId::C);
