@@ -38,6 +38,7 @@ Command addDetectCommand(CLI::App& app) {
         std::vector<FaceId> faces;
         std::string missing;
         for (FaceId face : kAllFaces) {
+          if (project.heldOutFaces.contains(face)) continue;  // leave-one-face-out: no rings from its photo
           if (!project.facePhotos[faceIndex(face)].empty())
             faces.push_back(face);
           else
@@ -46,6 +47,9 @@ Command addDetectCommand(CLI::App& app) {
         if (!missing.empty() && !o->allowMissing)
           throw InputError(o->document + " has no photo for face " + missing +
                            " (expected <face>_col.png; --allow-missing skips those faces)");
+        if (!project.heldOutFaces.empty())
+          std::printf("held out (the project's held_out_faces): %s, not detected\n",
+                      project.heldOutFaces.letters().c_str());
         createOutputFolder(o->out);
         const ClassicalRingDetector detector;
         nlohmann::json facesJson = nlohmann::json::object();

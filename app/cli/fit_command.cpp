@@ -9,6 +9,8 @@
 
 #include "command.hpp"
 #include "fit/growth_field_fit.hpp"
+#include "fit/held_out_faces.hpp"
+#include "hold_out_option.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "params/builtin_presets.hpp"
@@ -30,6 +32,7 @@ Command addFitCommand(CLI::App& app) {
     bool ignoreTraces = false;
     double anatomyWeight = 1.0;
     std::string species;
+    std::vector<std::string> holdOut;
   };
   auto o = std::make_shared<Options>();
   fit->add_option("SAMPLE", o->sample,
@@ -54,8 +57,10 @@ Command addFitCommand(CLI::App& app) {
                   "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri or "
                   "nara (kerf-cli params --presets lists them). Default: a sample folder named by its Mokume "
                   "code (CN03) gets that species; a project keeps its own wood; 'none' keeps the defaults");
+  addHoldOutFaceOption(fit, o->holdOut);
   return {
       fit, [o](Context& context) {
+        FaceSet heldOut = heldOutFacesFromOption(o->holdOut);  // bad letters fail before any work
         const fs::path sample = o->sample;
         const bool isProject = fs::is_regular_file(sample);
         if (!isProject && !fs::is_directory(sample))
@@ -86,12 +91,23 @@ Command addFitCommand(CLI::App& app) {
           std::printf("species: %s (%s)%s\n", species->name.c_str(), species->id.c_str(),
                       o->species.empty() ? ", from the sample's name; --species to choose another" : "");
         }
+        // A project's held-out faces stay held out: the option adds to them, it never brings a photo back.
+        heldOut |= project.heldOutFaces;
+        try {
+          requireFaceLeftToFit(heldOut);
+        } catch (const InputError& e) {
+          throw InputError(std::string(e.what()) + " (with " + sample.string() + "'s own held_out_faces " +
+                           project.heldOutFaces.letters() + ")");
+        }
+        project.heldOutFaces = heldOut;
 
         GrowthFieldFitInput input;
+        input.heldOut = heldOut;  // the fit drops whatever of these faces is below (fit/held_out_faces.hpp)
         if (!o->ignoreTraces) input.traces = project.annotations.traces;
         input.knotMarks = project.annotations.knots;  // knots of the field (Mokume Sec. 5.2.4)
         std::array<std::string, 6> files;
         for (FaceId face : kAllFaces) {
+          if (heldOut.contains(face)) continue;  // not even read: a held-out face's ring image is its photo's
           const fs::path file = findRingLocalizationImage(folder, face);
           if (file.empty()) {
             // A sample traced by hand needs no ring images; otherwise say which face is skipped.
@@ -107,6 +123,7 @@ Command addFitCommand(CLI::App& app) {
         }
         // Photos for the anatomical prior (fit/anatomy_prior.hpp).
         for (FaceId face : kAllFaces) {
+          if (heldOut.contains(face)) continue;
           const fs::path file = isProject ? project.facePhotos[faceIndex(face)]
                                           : folder / (std::string(1, faceLetter(face)) + "_col.png");
           if (!file.empty() && fs::exists(file)) input.photos[faceIndex(face)] = readImage(file);

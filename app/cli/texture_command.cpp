@@ -20,11 +20,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The photos of --photos DIR (A_col.png or A.png .., any format OpenImageIO reads) or of the project.
+// The photos of --photos DIR (A_col.png or A.png .., any format OpenImageIO reads) or of the project;
+// the project's held-out faces are not read (leave-one-face-out, fit/held_out_faces.hpp).
 std::array<Image, 6> loadPhotos(const Project& project, const std::string& folder) {
   std::array<Image, 6> photos;
   int count = 0;
   for (FaceId face : kAllFaces) {
+    if (project.heldOutFaces.contains(face)) continue;
     fs::path file = project.facePhotos[faceIndex(face)];
     if (!folder.empty()) {
       file.clear();
@@ -123,6 +125,7 @@ Command addTextureCommand(CLI::App& app) {
         options.search.maxSweeps = o->sweeps;
         options.coarseSearch = !o->noCoarse;
         options.refitColours = !o->keepColours;
+        options.heldOut = project.heldOutFaces;
         if (!o->parameters.empty()) {
           std::string list = o->parameters;
           std::replace(list.begin(), list.end(), ',', ' ');

@@ -80,8 +80,10 @@ std::array<GrayImage8, 6> readFolderRingImages(const fs::path& folder) {
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos,
                                const Progress& progress, const std::vector<RingTrace>& traces,
-                               const GrowthFitPreview& preview, const std::vector<KnotMark>& knotMarks) {
+                               const GrowthFitPreview& preview, const std::vector<KnotMark>& knotMarks,
+                               const FaceSet& heldOut) {
   GrowthFieldFitInput input;
+  input.heldOut = heldOut;  // dropped by the fit itself, whatever of these faces is below
   input.rings = images;
   input.traces = traces;
   input.knotMarks = knotMarks;  // marks sharing an id: one knot of the field (Mokume Sec. 5.2.4)

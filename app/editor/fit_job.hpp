@@ -19,6 +19,7 @@
 #include "field/growth_rates.hpp"
 #include "fit/iso_contours.hpp"
 #include "geometry/block.hpp"
+#include "geometry/face_set.hpp"
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
 #include "util/progress.hpp"
@@ -82,12 +83,12 @@ using GrowthFitPreview = std::function<void(const WoodParameters&, const GrowthR
 // The growth-field fit of `kerf-cli fit` on the given ring-localization images and ring traces, with the
 // anatomical prior from the face photos where there are any (null images: none). Throws InputError when
 // there are too few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled
-// on request.
+// on request. Nothing of the held-out faces (Project::heldOutFaces) is used: fit/held_out_faces.hpp.
 inline constexpr int kMinFitContours = 4;
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos = {},
                                const Progress& progress = {}, const std::vector<RingTrace>& traces = {},
                                const GrowthFitPreview& preview = {},
-                               const std::vector<KnotMark>& knotMarks = {});
+                               const std::vector<KnotMark>& knotMarks = {}, const FaceSet& heldOut = {});
 
 }  // namespace kerf

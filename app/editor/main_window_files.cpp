@@ -153,6 +153,11 @@ void MainWindow::documentLoaded(const LoadedDocument& loaded) {
                    loaded.name, loaded.photos);
   if (isProjectFile || QFileInfo(loaded.path).isDir()) recent_->add(loaded.path);
   logMessage("info", tr("Opened %1").arg(loaded.path));
+  const FaceSet& heldOut = loaded.project->heldOutFaces;
+  if (!heldOut.empty())
+    logMessage("info", tr("Held out (leave-one-face-out): face %1. Detect Rings, Fit Growth Field and Infer "
+                          "Texture use nothing of its photo, so its rendering is a prediction")
+                           .arg(QString::fromStdString(heldOut.letters())));
 }
 
 bool MainWindow::save() {

@@ -98,7 +98,8 @@ void MainWindow::detectRings() {
     return;
   }
   if (ringJob_ && jobs_->isRunning(ringJob_)) return;  // already under way
-  const std::array<QImage, 6> photos = document_->photos();
+  std::array<QImage, 6> photos = document_->photos();
+  clearFaces(photos, document_->project().heldOutFaces);  // leave-one-face-out: no rings from their photos
   const Block block = document_->project().block;
   ringJob_ = jobs_->start(
       tr("Detecting rings"),
@@ -161,14 +162,15 @@ void MainWindow::fitGrowthField() {
   }
   const Block block = document_->project().block;
   const WoodParameters current = document_->project().params;
-  const std::array<QImage, 6> photos = document_->photos();  // for the anatomical prior and the colours
+  const std::array<QImage, 6> photos = document_->photos();   // for the anatomical prior and the colours
+  const FaceSet heldOut = document_->project().heldOutFaces;  // the fit uses nothing of these faces
   logMessage("info", !traces.empty() ? tr("Fitting the growth field to %1 ring traces").arg(traces.size())
                      : detection     ? tr("Fitting the growth field to the detected rings")
                                      : tr("Fitting the growth field to the ring images in %1")
                                        .arg(QString::fromStdString(folder.string())));
   fitJob_ = jobs_->start(
       tr("Fitting growth field"),
-      [detection, folder, block, current, photos, traces, knotMarks](
+      [detection, folder, block, current, photos, traces, knotMarks, heldOut](
           const Progress& progress, const JobRunner::Preview& preview) -> QVariant {
         std::array<GrayImage8, 6> images;
         if (detection) {
@@ -184,8 +186,8 @@ void MainWindow::fitGrowthField() {
           preview(QVariant::fromValue(
               std::make_shared<const std::pair<WoodParameters, GrowthRates>>(params, rates)));
         };
-        return QVariant::fromValue(std::make_shared<const GrowthFitResult>(
-            kerf::fitGrowthField(images, block, current, photos, progress, traces, live, knotMarks)));
+        return QVariant::fromValue(std::make_shared<const GrowthFitResult>(kerf::fitGrowthField(
+            images, block, current, photos, progress, traces, live, knotMarks, heldOut)));
       },
       [this](const QVariant& result) {
         fitJob_ = 0;

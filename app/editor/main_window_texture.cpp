@@ -53,7 +53,8 @@ void MainWindow::inferTexture() {
   const WoodParameters current = project.params;
   const GrowthRates rates = project.effectiveRates();
   const std::array<QImage, 6> photos = document_->photos();
-  const TextureInferenceOptions options = textureOptions_;
+  TextureInferenceOptions options = textureOptions_;
+  options.heldOut = project.heldOutFaces;  // leave-one-face-out: their photos are not used
   logMessage("info", tr("Inferring the texture from the face photos"));
   textureJob_ = jobs_->start(
       tr("Inferring texture"),

@@ -11,6 +11,7 @@
 #include "field/growth_field.hpp"
 #include "fit/colour_fit.hpp"
 #include "fit/distortion_fit.hpp"
+#include "fit/held_out_faces.hpp"
 #include "fit/iso_contour_loss.hpp"
 #include "fit/iso_contours.hpp"
 #include "util/error.hpp"
@@ -169,6 +170,13 @@ RingLevelEstimate ringLevelsFromNumberedContours(const IsoContours& contours, co
 GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, const Block& block,
                                             const WoodParameters& current,
                                             const GrowthFieldFitOptions& options, const Progress& progress) {
+  // Leave-one-face-out: the held-out faces' inputs are dropped here, before any stage below reads them.
+  if (!input.heldOut.empty()) {
+    GrowthFieldFitResult out = fitGrowthFieldToSample(
+        withoutHeldOutFaces(input), block, withNeutralTints(current, input.heldOut), options, progress);
+    out.report.heldOut = input.heldOut;
+    return out;
+  }
   GrowthFieldFitResult out;
   GrowthFieldFitReport& report = out.report;
   const Stopwatch extractClock;
@@ -368,6 +376,7 @@ std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& 
     if (n < 0) continue;
     perFace += format("%s%c %d", perFace.empty() ? "" : ", ", faceLetter(face), n);
   }
+  if (!r.heldOut.empty()) lines.push_back(heldOutReportLine(r.heldOut));
   lines.push_back("contours per face: " + (perFace.empty() ? std::string("none from ring images") : perFace));
   if (r.tracesUsed > 0)
     lines.push_back(format("ring traces: %d (%d numbered by year)", r.tracesUsed, r.numberedTraces));

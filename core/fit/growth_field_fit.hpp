@@ -17,6 +17,7 @@
 #include "fit/iso_contours.hpp"
 #include "fit/pith_fit.hpp"
 #include "geometry/block.hpp"
+#include "geometry/face_set.hpp"
 #include "io/image.hpp"
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
@@ -36,6 +37,9 @@ struct GrowthFieldFitInput {
   // Knot centres marked on the faces (rings/annotations.hpp); marks sharing an id are one knot, fitted
   // into the field after the distortions (Mokume Sec. 5.2.4, fit/block_knot_fit.hpp).
   std::vector<KnotMark> knotMarks;
+  // Faces held out of the fit (leave-one-face-out, fit/held_out_faces.hpp): their ring images, photos,
+  // traces and knot marks above are dropped before any stage reads them, and their tints are neutral.
+  FaceSet heldOut;
 };
 
 struct GrowthFieldFitOptions {
@@ -57,6 +61,7 @@ struct GrowthFieldFitOptions {
 };
 
 struct GrowthFieldFitReport {
+  FaceSet heldOut;                                             // faces the fit did not use
   std::array<int, 6> contoursPerFace{-1, -1, -1, -1, -1, -1};  // -1: no ring image for the face
   PithFitResult pith;                                          // O, V, tilt, azimuth, losses, ambiguity
   RingLevelEstimate rings;                                     // along the undeformed field

@@ -140,6 +140,7 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
   if (!project.annotations.empty()) out["annotations"] = annotationsToJson(project.annotations);
   if (project.log) out["log"] = projectLogToJson(*project.log);
   if (!project.knots.empty()) out["knots"] = blockKnotsToJson(project.knots);
+  if (!project.heldOutFaces.empty()) out["held_out_faces"] = project.heldOutFaces.letters();
   if (project.cutPlane) {
     out["view"] = {{"cut_plane",
                     {{"offset_mm", project.cutPlane->offsetMm},
@@ -193,6 +194,16 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   }
   if (in.contains("log") && !in["log"].is_null()) project.log = projectLogFromJson(in["log"]);
   if (in.contains("knots") && !in["knots"].is_null()) project.knots = blockKnotsFromJson(in["knots"]);
+  if (in.contains("held_out_faces") && !in["held_out_faces"].is_null()) {
+    const json& held = in["held_out_faces"];
+    if (!held.is_string())
+      throw InputError("\"held_out_faces\" must be a string of face letters, e.g. \"C\"");
+    try {
+      project.heldOutFaces = parseFaceSet(held.get<std::string>());
+    } catch (const InputError& e) {
+      throw InputError(std::string("held_out_faces: ") + e.what());
+    }
+  }
   if (in.contains("view") && in["view"].is_object() && in["view"].contains("cut_plane")) {
     const json& cut = in["view"]["cut_plane"];
     if (!cut.is_object()) throw InputError("\"view.cut_plane\" must be an object");

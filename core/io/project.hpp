@@ -11,6 +11,7 @@
 #include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
+#include "geometry/face_set.hpp"
 #include "io/project_log.hpp"
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
@@ -40,6 +41,10 @@ struct Project {
   // Knots in the block's growth field (Mokume Sec. 5.2.4; fitted from knot marks or edited), optional key
   // "knots" (io/block_knots_json.hpp).
   std::vector<BlockKnot> knots;
+  // Faces held out of every fit (leave-one-face-out, docs/fitting.md): ring detection, the growth-field
+  // fit, the colours and the texture use nothing of their photos, so their rendering is a prediction.
+  // Optional key "held_out_faces", the letters ("C"); absent when empty.
+  FaceSet heldOutFaces;
 
   GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
 };

@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 
 #include "fit/colour_fit.hpp"
+#include "fit/held_out_faces.hpp"
 #include "texture/detail_space.hpp"
 #include "util/error.hpp"
 #include "util/resource_usage.hpp"
@@ -79,6 +80,18 @@ WoodParameters coarseSearch(const TextureObjective& objective, const WoodParamet
 TextureInferenceResult inferTexture(const Block& block, const WoodParameters& params,
                                     const GrowthRates& rates, const std::array<Image, 6>& photos,
                                     const TextureInferenceOptions& options, const Progress& progress) {
+  // Leave-one-face-out: the held-out photos are dropped here, before anything below reads them.
+  if (!options.heldOut.empty()) {
+    requireFaceLeftToFit(options.heldOut);
+    std::array<Image, 6> kept = photos;
+    clearFaces(kept, options.heldOut);
+    TextureInferenceOptions rest = options;
+    rest.heldOut = {};
+    TextureInferenceResult result =
+        inferTexture(block, withNeutralTints(params, options.heldOut), rates, kept, rest, progress);
+    result.heldOut = options.heldOut;
+    return result;
+  }
   const Stopwatch total;
   validate(params);
   const std::vector<DetailCoordinate> coordinates = detailCoordinates(options.parameters);
@@ -185,6 +198,7 @@ TextureInferenceResult inferTexture(const Block& block, const WoodParameters& pa
 
 std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResult& r) {
   std::vector<std::string> lines;
+  if (!r.heldOut.empty()) lines.push_back(heldOutReportLine(r.heldOut));
   lines.push_back(format("texture, per face (%s): style distance and mean |render - photo|, before -> after",
                          r.fullFaces ? "whole faces" : "crops"));
   for (FaceId face : kAllFaces) {

@@ -19,6 +19,7 @@
 
 #include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
+#include "geometry/face_set.hpp"
 #include "io/image.hpp"
 #include "params/parameter_schema.hpp"
 #include "texture/face_crops.hpp"
@@ -38,6 +39,9 @@ struct TextureInferenceOptions {
   bool fullFaceReport = true;  // per-face distances on whole faces (else on the crops)
   // Live preview: called from the calling thread with every improved parameter set.
   std::function<void(const WoodParameters&)> preview;
+  // Faces held out (leave-one-face-out, fit/held_out_faces.hpp): their photos are dropped before the
+  // search and the colour step read them, and their tints are neutral.
+  FaceSet heldOut;
 };
 
 struct FaceTextureReport {
@@ -47,6 +51,7 @@ struct FaceTextureReport {
 };
 
 struct TextureInferenceResult {
+  FaceSet heldOut;        // faces whose photos were not used
   WoodParameters params;  // the input with the searched detail (and, refitted, colour) parameters replaced
   std::array<FaceTextureReport, 6> faces;
   bool fullFaces = false;  // whether `faces` were scored on whole faces or on the crops
@@ -57,8 +62,8 @@ struct TextureInferenceResult {
   double coarseSeconds = 0, searchSeconds = 0, colourSeconds = 0, reportSeconds = 0, seconds = 0;
 };
 
-// photos: A..F (empty: no photo); at least one. Throws InputError (no photo, a photo whose proportions
-// differ from its face, an unknown parameter id), Cancelled on request.
+// photos: A..F (empty: no photo); at least one besides the held-out faces. Throws InputError (no photo, a
+// photo whose proportions differ from its face, an unknown parameter id), Cancelled on request.
 TextureInferenceResult inferTexture(const Block& block, const WoodParameters& params,
                                     const GrowthRates& rates, const std::array<Image, 6>& photos,
                                     const TextureInferenceOptions& options = {},

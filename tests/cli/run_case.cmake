@@ -1,5 +1,6 @@
 # Runs one kerf-cli invocation and checks its exit code, its output and the files it wrote.
 # -DCOMMAND="a;b;c"  -DEXPECT_SUCCESS=ON|OFF  -DEXPECT_OUTPUT=regex  -DEXPECT_FILES="f1;f2"
+# -DEXPECT_CODE=N (the exact exit code, e.g. 2 for bad input)
 # -DFILE_CONTAINS="file|regex" (the first 4 KiB of the file must match)
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
@@ -12,6 +13,9 @@ if(NOT EXPECT_SUCCESS AND code EQUAL 0)
 endif()
 if(NOT EXPECT_SUCCESS AND NOT code MATCHES "^[0-9]+$")
   message(FATAL_ERROR "kerf-cli crashed: ${code}")
+endif()
+if(DEFINED EXPECT_CODE AND NOT code EQUAL EXPECT_CODE)
+  message(FATAL_ERROR "expected exit code ${EXPECT_CODE}, got ${code}")
 endif()
 if(DEFINED EXPECT_OUTPUT AND NOT all MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "output does not match \"${EXPECT_OUTPUT}\"")

@@ -76,6 +76,30 @@ TEST(Project, RoundTripKeepsEverySchemaValueAndTheRates) {
   EXPECT_EQ(moved.facePhotos[0], dir.parent_path() / "moved" / "photos" / "A_col.png");
 }
 
+TEST(Project, RoundTripKeepsTheHeldOutFaces) {
+  const fs::path dir = scratch("held-out");
+  Project project;
+  saveProject(project, dir / "none.kerf");
+  std::ifstream none(dir / "none.kerf");
+  EXPECT_FALSE(nlohmann::json::parse(none).contains("held_out_faces"));  // omitted when empty
+  EXPECT_TRUE(loadProject(dir / "none.kerf").heldOutFaces.empty());
+
+  project.heldOutFaces.insert(FaceId::E);
+  project.heldOutFaces.insert(FaceId::A);
+  saveProject(project, dir / "p.kerf");
+  std::ifstream in(dir / "p.kerf");
+  EXPECT_EQ(nlohmann::json::parse(in)["held_out_faces"], "AE");
+  EXPECT_EQ(loadProject(dir / "p.kerf").heldOutFaces, project.heldOutFaces);
+
+  writeText(dir / "lower.kerf", R"({"format": "kerf-project", "version": 1, "held_out_faces": "c"})");
+  EXPECT_EQ(loadProject(dir / "lower.kerf").heldOutFaces.letters(), "C");
+  writeText(dir / "bad.kerf", R"({"format": "kerf-project", "version": 1, "held_out_faces": "CG"})");
+  EXPECT_NE(loadError(dir / "bad.kerf").find("held_out_faces: 'G'"), std::string::npos)
+      << loadError(dir / "bad.kerf");
+  writeText(dir / "number.kerf", R"({"format": "kerf-project", "version": 1, "held_out_faces": 3})");
+  EXPECT_NE(loadError(dir / "number.kerf").find("string of face letters"), std::string::npos);
+}
+
 TEST(Project, SavingIsAtomicAndLeavesNoTemporaryFiles) {
   const fs::path dir = scratch("atomic");
   Project project;

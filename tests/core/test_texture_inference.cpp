@@ -10,6 +10,7 @@
 
 #include "demo/demo_block.hpp"
 
+#include "noise_images.hpp"
 #include "texture/detail_space.hpp"
 #include "texture/texture_inference.hpp"
 #include "texture_fixture.hpp"
@@ -39,6 +40,16 @@ TextureInferenceOptions fastOptions() {
   options.parameters = {"pores.radius_earlywood", "pores.cell_size", "rays.spacing", "fibers.strength"};
   options.refitColours = false;
   options.fullFaceReport = false;
+  return options;
+}
+
+// Smaller still, for comparing runs with each other: one 64 px crop per face, one sweep, no coarse grid.
+TextureInferenceOptions comparisonOptions() {
+  TextureInferenceOptions options = fastOptions();
+  options.coarseSearch = false;
+  options.search.maxSweeps = 1;
+  options.loss.cropsPerFace = 1;
+  options.loss.cropSize = 64;
   return options;
 }
 
@@ -81,16 +92,42 @@ TEST(TextureInference, RecoversKnownDetailOfASyntheticBlock) {
 
 TEST(TextureInference, IsDeterministic) {
   const test::TextureSynthetic& s = synthetic();
-  TextureInferenceOptions options = fastOptions();
-  options.coarseSearch = false;
-  options.search.maxSweeps = 1;
-  options.loss.cropsPerFace = 1;
-  options.loss.cropSize = 64;
+  TextureInferenceOptions options = comparisonOptions();
   const WoodParameters start = perturbedStart(s.truth.params);
   const TextureInferenceResult a = inferTexture(s.truth.block, start, s.rates, s.photos, options);
   const TextureInferenceResult b = inferTexture(s.truth.block, start, s.rates, s.photos, options);
   EXPECT_EQ(a.params, b.params);
   EXPECT_EQ(a.lossAfter, b.lossAfter);
+}
+
+// Leave-one-face-out (fit/held_out_faces.hpp): face C's photo replaced by noise and a tint learned from it
+// change nothing when C is held out, and change the result when it is not.
+TEST(TextureInference, UsesNothingOfAHeldOutPhoto) {
+  const test::TextureSynthetic& s = synthetic();
+  TextureInferenceOptions options = comparisonOptions();
+  options.refitColours = true;  // the colour step reads the photos too
+  options.heldOut.insert(FaceId::C);
+  const int c = faceIndex(FaceId::C);
+  std::array<Image, 6> garbage = s.photos;
+  garbage[c] = kerf::testing::noisePhoto(s.photos[c].width, s.photos[c].height);
+  const WoodParameters start = perturbedStart(s.truth.params);
+  WoodParameters learnedTint = start;
+  learnedTint.faceTintC = {1.3f, 0.8f, 0.9f};
+
+  const TextureInferenceResult clean = inferTexture(s.truth.block, start, s.rates, s.photos, options);
+  const TextureInferenceResult held = inferTexture(s.truth.block, learnedTint, s.rates, garbage, options);
+  EXPECT_EQ(held.params, clean.params);
+  EXPECT_EQ(held.lossBefore, clean.lossBefore);
+  EXPECT_EQ(held.lossAfter, clean.lossAfter);
+  EXPECT_FALSE(clean.faces[c].hasPhoto);
+  EXPECT_EQ(clean.params.faceTintC, WoodParameters{}.faceTintC);
+  EXPECT_EQ(formatTextureInferenceReport(held).front().rfind("held out (leave-one-face-out): face C;", 0),
+            0u);
+
+  options.heldOut = {};
+  const TextureInferenceResult leaked = inferTexture(s.truth.block, learnedTint, s.rates, garbage, options);
+  EXPECT_NE(leaked.lossBefore, clean.lossBefore);
+  EXPECT_FALSE(leaked.params == clean.params);
 }
 
 TEST(TextureInference, StopsWhenCancelled) {
