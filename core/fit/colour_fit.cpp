@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <tuple>
 #include <vector>
 
 #include "fit/ceres_progress.hpp"
@@ -22,6 +24,7 @@ struct Sample {
   int face = 0;
   double pigment = 0;       // Beer's-law concentration t without the ring profile
   double year = 0, ray = 0;
+  double phase = 0;         // where in its year the point lies (0 at a ring boundary)
   int profileKnot = 0;      // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
   double profileWeight[4] = {0, 0, 0, 0};
   double target[3] = {0, 0, 0};  // the photo's colour at the point
@@ -54,15 +57,37 @@ struct ColourModel {
   }
 };
 
-struct SampleResidual {
-  ColourModel model;
-  double weight;
+// Per year-phase statistics (issue 16): over a bin of points - one face, one sixteenth of the year, one
+// band of five years - the model's mean colour and its spread of luminance against the photos' over the
+// same points. Point by point, the model's pores and the photo's never line up, and rings a fraction
+// of a millimetre off their photo disagree at every edge; the least-squares answer to both is to lower
+// the contrast until the faces are one beige. The bin means are what the model can and must match
+// point for point: the shade of each part of the year, from heart to sapwood, from face to face. The
+// spread within a bin is the contrast of the detail that cannot be aligned (pores, fibres, mottling):
+// by Beer's law it grows with the earlywood-latewood colour ratio, which the means alone leave free.
+struct BinResidual {
+  std::vector<const Sample*> members;
+  glm::dvec3 rayColor;
+  double rayOpacity = 0, weight = 0;
+  double target[3] = {0, 0, 0};
+  double targetSpread = 0;  // standard deviation of the photo's luminance over the bin
+
   template <class T>
   bool operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
                   const T* tint, const T* profile, T* residual) const {
-    T colour[3];
-    model(early, late, sapEarly, sapLate, sap, tint, profile, colour);
-    for (int c = 0; c < 3; ++c) residual[c] = weight * (colour[c] - model.s->target[c]);
+    T sum[3] = {T(0), T(0), T(0)}, sumLuminance(0), sumLuminance2(0);
+    for (const Sample* s : members) {
+      T colour[3];
+      ColourModel{s, rayColor, rayOpacity}(early, late, sapEarly, sapLate, sap, tint, profile, colour);
+      for (int c = 0; c < 3; ++c) sum[c] += colour[c];
+      const T y = 0.299 * colour[0] + 0.587 * colour[1] + 0.114 * colour[2];
+      sumLuminance += y, sumLuminance2 += y * y;
+    }
+    const double n = static_cast<double>(members.size());
+    for (int c = 0; c < 3; ++c) residual[c] = weight * (sum[c] / n - target[c]);
+    using std::sqrt;
+    const T variance = sumLuminance2 / n - (sumLuminance / n) * (sumLuminance / n);
+    residual[3] = weight * (sqrt(variance + 1e-8) - targetSpread);
     return true;
   }
 };
@@ -183,7 +208,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
             s.profileKnot = material.ringProfileCell(w.year, weights);
             for (int i = 0; i < 4; ++i) s.profileWeight[i] = weights[i];
             s.pigment = w.pigment - material.ringProfile(w.year);
-            s.year = w.year, s.ray = w.ray;
+            s.year = w.year, s.ray = w.ray, s.phase = material.yearPhase(w.year);
           }
         },
         progress);
@@ -226,12 +251,27 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     for (int c = 0; c < 3; ++c) sapEarly[c] = early[c], sapLate[c] = late[c];
 
   ceres::Problem problem;
-  const double weight = 1.0 / std::sqrt(static_cast<double>(samples.size()));
-  for (const Sample& s : samples)
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SampleResidual, 3, 3, 3, 3, 3, 2, 3, 8>(
-                                 new SampleResidual{{&s, rayColor, params.rayOpacity}, weight}),
-                             new ceres::SoftLOneLoss(options.robustScale * weight), early, late, sapEarly,
-                             sapLate, sap, tint[s.face], profile);
+  std::map<std::tuple<int, int, int>, BinResidual> bins;  // (face, sixteenth of the year, 5-year band)
+  for (const Sample& s : samples) {
+    BinResidual& bin = bins[{s.face, std::min(15, static_cast<int>(16 * s.phase)),
+                             static_cast<int>(std::floor(s.year / 5.0))}];
+    bin.members.push_back(&s);
+    for (int c = 0; c < 3; ++c) bin.target[c] += s.target[c];
+    const double y = luminance(s.target);
+    bin.targetSpread += y * y;  // the sum of squares until divided below
+  }
+  for (auto& [key, bin] : bins) {
+    if (bin.members.size() < 8) continue;  // a sliver of a year at a face's edge: too noisy to weigh
+    const double n = static_cast<double>(bin.members.size());
+    for (double& t : bin.target) t /= n;
+    bin.targetSpread = std::sqrt(std::max(0.0, bin.targetSpread / n - luminance(bin.target) * luminance(bin.target)));
+    bin.rayColor = rayColor, bin.rayOpacity = params.rayOpacity;
+    bin.weight = std::sqrt(n / static_cast<double>(samples.size()));
+    const int face = std::get<0>(key);
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BinResidual, 4, 3, 3, 3, 3, 2, 3, 8>(
+                                 new BinResidual(std::move(bin))),
+                             nullptr, early, late, sapEarly, sapLate, sap, tint[face], profile);
+  }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ProfilePrior, 16, 8>(
                                new ProfilePrior{options.profileSmoothness, options.profileSmallness}),
                            nullptr, profile);

@@ -1,7 +1,7 @@
 #pragma once
 // Colour initialisation (Mokume Sec. 5.3.1 / A.2.3, the third stage of the authors' fit): given the
 // fitted growth field and the texture's detail, the colours of the wood and of each photographed face
-// are fitted to the face photos with a robust L1-like loss.
+// are fitted to the face photos.
 //
 // Kerf's colour model has the parameters of the one schema (not the authors' free 128-entry colour bar):
 // heartwood and sapwood earlywood/latewood colours, the heart-to-sapwood radius and blend, a colour
@@ -9,16 +9,17 @@
 // of the year, the base colour as a function of the growth value of Mokume Sec. 5.3.2). Everything else
 // the colour depends on - the pigment concentration t of Beer's law (season, ring-to-ring variation,
 // mottling, fibres, pores), the growth time and the rays - does not depend on these parameters, so it is
-// evaluated once per sample point, and the fit itself (Ceres, automatic differentiation, soft-L1) only
-// re-mixes colours: colour = tint_face * mix(E (L/E)^(t + profile(year)), ray colour, ray opacity * ray),
-// E and L blended from heartwood to sapwood by the growth time.
-// Photo and model are compared point by point (not cell means, which mix early- and latewood and drive
-// the colours to one mean: the flat beige of issue 16). The ring profile is where the fit learns the
-// ring's shading; it is smooth from knot to knot, and the soft-L1 keeps points a fraction of a
-// millimetre off their ring from washing it out.
+// evaluated once per sample point, and the fit itself (Ceres, automatic differentiation) only re-mixes
+// colours: colour = tint_face * mix(E (L/E)^(t + profile(year)), ray colour, ray opacity * ray), E and L
+// blended from heartwood to sapwood by the growth time.
+// The fit compares per year-phase statistics (issue 16): the mean colour over bins of points (a face, a
+// sixteenth of the year, a five-year band), model against photo, starting from the photos' shade at
+// each point of the year. A point-by-point loss rewards lowering the contrast wherever the model's
+// detail does not land exactly on the photo's (pores never do; rings a fraction of a millimetre off
+// do not), which made the faces one flat beige.
 // The face tints and the wood colours trade off (a brighter wood under darker tints looks the same); a
 // weak penalty on (tint - 1)^2 fixes that scale, as the authors' 10 * mean(face_cols^2) does beside their
-// L1 term (Kerf's data term is squared, hence the smaller weight).
+// L1 term.
 #include <array>
 
 #include "field/growth_rates.hpp"
@@ -30,9 +31,8 @@
 namespace kerf {
 
 struct ColourFitOptions {
-  int samplesPerSide = 96;  // sample points per face side (photo and model at the same point)
+  int samplesPerSide = 80;  // sample points per face side (photo and model at the same point)
   int maxIterations = 50;
-  double robustScale = 0.05;  // soft-L1 scale, colour units (0..1)
   double tintWeight = 0.02;   // only fixes the scale between wood colours and tints
   bool fitSapwood = true;     // the heart-to-sapwood radius and blend (needs both on the faces)
   bool fitRingProfile = true;  // rings.profile_*: the shading within a year (Mokume 5.3.2 base colour)

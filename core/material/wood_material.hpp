@@ -35,6 +35,7 @@ class WoodMaterial {
   float year(glm::vec3 pMm) const { return kernels_.woodYear(pMm); }
   // The fitted ring profile (rings.profile_*) at a growth time: the pigment it adds, and which of its
   // eight knots (k-1 .. k+2, modulo 8) weigh how much there.
+  float yearPhase(float year) const { return kernels_.yearPhase(year); }  // 0 at a ring boundary .. 1
   float ringProfile(float year) const { return kernels_.ringProfileAt(year); }
   int ringProfileCell(float year, glm::vec4& weights) const { return kernels_.ringProfileCell(year, weights); }
 

@@ -72,9 +72,14 @@ vec3 undistort(vec3 p, Cylindrical c, bool wantFiber, KERF_OUT(vec3) fiberDirect
   return p + amplitude * nr.x * c.radial + amplitude * nt.x * c.tangential;
 }
 
+// Where in its year a growth time lies: 0 at a ring boundary, rising to 1 at the next.
+float yearPhase(float year) {
+  return year - P.ringOffset - floor(year - P.ringOffset);
+}
+
 // Liu Sec. 4.2: a square wave over the year with a controllable early-to-latewood transition.
 float seasonOf(float year) {
-  float f = year - P.ringOffset - floor(year - P.ringOffset);
+  float f = yearPhase(year);
   float latewoodStart = 1.0f - P.latewoodFraction;
   float rise = stepSmooth(latewoodStart * (1.0f - P.transition), latewoodStart + 1e-4f, f);
   float fall = 1.0f - stepSmooth(1.0f - P.boundarySoftness, 1.0f, f);
@@ -104,7 +109,7 @@ vec4 catmullRomWeights(float t) {
 
 // The knot k before the point of the year at `year`, and the weights of knots k-1 .. k+2 there.
 int ringProfileCell(float year, KERF_OUT(vec4) weights) {
-  float x = 8.0f * (year - P.ringOffset - floor(year - P.ringOffset));
+  float x = 8.0f * yearPhase(year);
   int k = min(int(floor(x)), 7);
   weights = catmullRomWeights(x - float(k));
   return k;
