@@ -12,7 +12,7 @@ FaceDifferenceMaps::FaceDifferenceMaps(QObject* parent) : QObject(parent) {
 }
 
 void FaceDifferenceMaps::request(const Faces& photos, const Faces& models) {
-  if (watcher_.isRunning()) {
+  if (computing_) {
     pending_ = std::make_pair(photos, models);  // QImage copies share their pixels: cheap
     return;
   }
@@ -20,12 +20,14 @@ void FaceDifferenceMaps::request(const Faces& photos, const Faces& models) {
 }
 
 void FaceDifferenceMaps::start(const Faces& photos, const Faces& models) {
+  computing_ = true;
   // The work holds its own copies: it needs nothing of this object, which may be gone when it returns.
   watcher_.setFuture(
       QtConcurrent::run(backgroundPool(), [photos, models] { return differenceHeatMaps(photos, models); }));
 }
 
 void FaceDifferenceMaps::finished() {
+  computing_ = false;
   maps_ = watcher_.result();  // kept even when stale: better than nothing until the newer ones come
   if (pending_) {
     const auto [photos, models] = std::move(*pending_);

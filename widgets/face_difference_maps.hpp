@@ -22,7 +22,7 @@ class FaceDifferenceMaps : public QObject {
   void request(const Faces& photos, const Faces& models);
   // The last maps computed (possibly of older inputs while upToDate() is false); empty before the first.
   const Faces& maps() const { return maps_; }
-  bool upToDate() const { return !watcher_.isRunning() && !pending_; }
+  bool upToDate() const { return !computing_ && !pending_; }
 
  signals:
   void ready();
@@ -34,6 +34,7 @@ class FaceDifferenceMaps : public QObject {
   QFutureWatcher<Faces> watcher_;
   std::optional<std::pair<Faces, Faces>> pending_;  // photos, models
   Faces maps_;
+  bool computing_ = false;  // from start() until finished() has the result (not the future's own state)
 };
 
 }  // namespace kerf

@@ -128,6 +128,7 @@ void FacesView::setFaces(const std::array<QImage, 6>& faces, const Block& block)
   photos_ = faces;
   renderings_ = {};
   differencesStale_ = true;
+  requestDifferences();
   update();
 }
 
@@ -135,6 +136,7 @@ void FacesView::clear() {
   photos_ = {};
   renderings_ = {};
   differencesStale_ = true;
+  requestDifferences();
   update();
 }
 
