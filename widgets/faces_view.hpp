@@ -83,6 +83,10 @@ class FacesView : public QWidget {
   // whether they are of the photos and renderings shown now.
   const std::array<QImage, 6>& differenceMaps() const;
   bool differenceUpToDate() const;
+  // Split display: whether a left press at a widget point takes the photo | model line, and whether it is
+  // being dragged (the ring-tracing tools, which filter the view's mouse events, step aside for it).
+  bool splitLineUnder(QPointF widgetPos) const { return splitLineAt(widgetPos).has_value(); }
+  bool draggingSplit() const { return splitDrag_.has_value(); }
 
   // Polylines drawn over the faces (ring contours): per face A..F, in the pixel coordinates of an image
   // of imageSizes[face] pixels covering the whole face (continuous coordinates: a pixel's centre is at

@@ -201,6 +201,7 @@ bool FacesView::splitMousePress(QMouseEvent* event) {
 }
 
 bool FacesView::splitMouseMove(QMouseEvent* event) {
+  if (splitDrag_ && !(event->buttons() & Qt::LeftButton)) splitDrag_.reset();  // released elsewhere
   if (splitDrag_) {
     const QRectF r = faceRect(*splitDrag_);
     setSplitPosition((event->position().x() - r.left()) / r.width());

@@ -5,6 +5,8 @@
 #include <QtTest>
 
 #include "demo_window.hpp"
+#include "annotation_layer.hpp"
+#include "document.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
 
@@ -26,6 +28,7 @@ class TestCompareFaces : public QObject {
   void actionsHaveShortcutsAndTips();
   void shortcutsSwitchTheDisplay();
   void sliderMovesTheSplitLine();
+  void lineIsDraggedWhateverTheTracingTool();
   void differenceComesWithoutBlocking();
   void savesPictures();
   void cleanupTestCase() { window_.reset(); }
@@ -92,6 +95,23 @@ void TestCompareFaces::sliderMovesTheSplitLine() {
   slider->setValue(20);
   QCOMPARE(view()->splitPosition(), 0.65);
   QCOMPARE(view()->blendOpacity(), 0.2);
+}
+
+void TestCompareFaces::lineIsDraggedWhateverTheTracingTool() {
+  // The tracing tools filter the view's mouse events; on the line they leave the press to it.
+  press(4);
+  view()->setSplitPosition(0.5);
+  QCOMPARE(window_->annotationLayer()->tool(), AnnotationLayer::Tool::Select);
+  const QRectF a = view()->faceRect(FaceId::A);
+  const auto point = [&](double u) { return QPointF(a.left() + u * a.width(), a.top() + 0.3 * a.height()).toPoint(); };
+  QTest::mousePress(view(), Qt::LeftButton, {}, point(0.5));
+  QVERIFY(view()->draggingSplit());
+  QTest::mouseMove(view(), point(0.2));
+  QTest::mouseRelease(view(), Qt::LeftButton, {}, point(0.2));
+  QVERIFY(!view()->draggingSplit());
+  QVERIFY(std::abs(view()->splitPosition() - 0.2) <= 1.5 / a.width());
+  QCOMPARE(window_->faceSlider()->value(), static_cast<int>(std::lround(view()->splitPosition() * 100)));
+  QVERIFY(window_->document()->annotations().traces.empty());
 }
 
 void TestCompareFaces::differenceComesWithoutBlocking() {
