@@ -33,8 +33,9 @@ QRgb differenceColour(int difference, int lighter) {
 QImage differenceHeatMap(const QImage& photo, const QImage& model) {
   if (photo.isNull() || model.isNull()) return {};
   const QImage p = photo.convertToFormat(QImage::Format_RGB32);
-  const QImage m = (model.size() == photo.size() ? model : model.scaled(photo.size(), Qt::IgnoreAspectRatio,
-                                                                        Qt::SmoothTransformation))
+  const QImage m = (model.size() == photo.size()
+                        ? model
+                        : model.scaled(photo.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation))
                        .convertToFormat(QImage::Format_RGB32);
   QImage heat(p.size(), QImage::Format_RGB32);
   for (int y = 0; y < p.height(); ++y) {
@@ -43,8 +44,8 @@ QImage differenceHeatMap(const QImage& photo, const QImage& model) {
     auto* out = reinterpret_cast<QRgb*>(heat.scanLine(y));
     for (int x = 0; x < p.width(); ++x) {
       const QRgb a = photoRow[x], b = modelRow[x];
-      const int difference = (std::abs(qRed(b) - qRed(a)) + std::abs(qGreen(b) - qGreen(a)) +
-                              std::abs(qBlue(b) - qBlue(a))) / 3;
+      const int difference =
+          (std::abs(qRed(b) - qRed(a)) + std::abs(qGreen(b) - qGreen(a)) + std::abs(qBlue(b) - qBlue(a))) / 3;
       out[x] = differenceColour(difference, luma(b) - luma(a));
     }
   }

@@ -1,8 +1,9 @@
 #pragma once
 // The faces view's difference heat maps (face_difference.hpp), computed on the background pool so the GUI
-// thread never waits for them: six 1024 px faces take 130-200 ms on two cores (tests/widgets/test_faces_compare.cpp,
-// differenceTiming). request() while a computation runs keeps only the newest inputs and starts them
-// when it returns; ready() says that maps() holds the maps of the newest request.
+// thread never waits for them: six 1024 px faces take 130-200 ms on two cores
+// (tests/widgets/test_faces_compare.cpp, differenceTiming). request() while a computation runs keeps only the
+// newest inputs and starts them when it returns; ready() says that maps() holds the maps of the newest
+// request.
 #include <QFutureWatcher>
 #include <QImage>
 #include <QObject>

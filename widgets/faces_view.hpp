@@ -197,7 +197,7 @@ class FacesView : public QWidget {
   FaceDisplay display_ = FaceDisplay::Photos;
   double blendOpacity_ = 0.5;
   double splitPosition_ = 0.5;
-  std::optional<FaceId> splitDrag_;      // the face whose split line is being dragged
+  std::optional<FaceId> splitDrag_;           // the face whose split line is being dragged
   std::optional<QCursor> cursorBeforeSplit_;  // while the cursor shows the split line can be dragged
   class FaceDifferenceMaps* differences_ = nullptr;
   bool differencesStale_ = true;  // photos or renderings changed since the last request

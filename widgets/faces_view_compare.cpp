@@ -112,7 +112,8 @@ void FacesView::drawDifferenceFace(QPainter& painter, const QRectF& target, Face
   drawTag(painter, target, tr("comparing…"), Qt::AlignBottom | Qt::AlignLeft);
 }
 
-void FacesView::drawTag(QPainter& painter, const QRectF& face, const QString& text, Qt::Alignment corner) const {
+void FacesView::drawTag(QPainter& painter, const QRectF& face, const QString& text,
+                        Qt::Alignment corner) const {
   painter.save();
   QFont font = painter.font();
   font.setPixelSize(static_cast<int>(std::clamp(face.height() * 0.06, 10.0, 13.0)));

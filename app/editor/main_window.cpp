@@ -94,7 +94,8 @@ void MainWindow::createViews() {
   displayGroup_ = new QActionGroup(this);
   const QString names[] = {tr("Photos"), tr("Model"), tr("Blend"), tr("Split"), tr("Difference")};
   const QString tips[] = {
-      tr("Show the photographs of the faces (Ctrl+1)"), tr("Show the model's rendering of the faces (Ctrl+2)"),
+      tr("Show the photographs of the faces (Ctrl+1)"),
+      tr("Show the model's rendering of the faces (Ctrl+2)"),
       tr("Show the model over the photos; the slider sets how much (Ctrl+3)"),
       tr("Compare: each face's photo left of a line, the model's wood right of it; drag the line (or the "
          "slider) across the faces to see where the rings and the colour part (Ctrl+4)"),
@@ -350,9 +351,9 @@ void MainWindow::updateFacesView() {
                                    tr("Photo | model"), tr("Model against photo")};
   static_assert(std::size(titles) == kFaceDisplayCount);
   const QString toggle = photos ? tr("%1: photos / model").arg(shortcut) : QString();
+  const bool split = displayMode_ == static_cast<int>(FaceDisplay::Split);
   facesView_->setCaption(hasDocument_ ? titles[displayMode_] : QString(),
-                         displayMode_ == static_cast<int>(FaceDisplay::Split) ? tr("drag the line · %1").arg(toggle)
-                                                                              : toggle);
+                         split ? tr("drag the line · %1").arg(toggle) : toggle);
 }
 
 // One slider, two meanings: the model's opacity in Blend, the photo | model line in Split.
@@ -362,8 +363,9 @@ void MainWindow::updateFaceSlider() {
   blendSlider_->setEnabled(split || displayMode_ == static_cast<int>(FaceDisplay::Blend));
   blendSlider_->setValue(static_cast<int>(
       std::lround(100 * (split ? facesView_->splitPosition() : facesView_->blendOpacity()))));
-  blendSlider_->setToolTip(split ? tr("Where the line between photo (left) and model (right) crosses the faces")
-                                 : tr("Opacity of the model over the photos in Blend mode"));
+  const QString tip = split ? tr("Where the line between photo (left) and model (right) crosses the faces")
+                            : tr("Opacity of the model over the photos in Blend mode");
+  blendSlider_->setToolTip(tip);
 }
 
 QList<QAction*> MainWindow::faceDisplayActions() const {

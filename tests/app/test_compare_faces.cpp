@@ -4,8 +4,8 @@
 #include <QSlider>
 #include <QtTest>
 
-#include "demo_window.hpp"
 #include "annotation_layer.hpp"
+#include "demo_window.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
@@ -103,7 +103,9 @@ void TestCompareFaces::lineIsDraggedWhateverTheTracingTool() {
   view()->setSplitPosition(0.5);
   QCOMPARE(window_->annotationLayer()->tool(), AnnotationLayer::Tool::Select);
   const QRectF a = view()->faceRect(FaceId::A);
-  const auto point = [&](double u) { return QPointF(a.left() + u * a.width(), a.top() + 0.3 * a.height()).toPoint(); };
+  const auto point = [&](double u) {
+    return QPointF(a.left() + u * a.width(), a.top() + 0.3 * a.height()).toPoint();
+  };
   QTest::mousePress(view(), Qt::LeftButton, {}, point(0.5));
   QVERIFY(view()->draggingSplit());
   QTest::mouseMove(view(), point(0.2));

@@ -126,7 +126,8 @@ void TestFacesCompare::splitLineFollowsTheMouse() {
   QTest::mousePress(view_.get(), Qt::LeftButton, {}, at(FaceId::A, 0.5, 0.3));
   QTest::mouseMove(view_.get(), at(FaceId::A, 0.25, 0.3));
   QTest::mouseRelease(view_.get(), Qt::LeftButton, {}, at(FaceId::A, 0.25, 0.3));
-  QVERIFY2(std::abs(view_->splitPosition() - 0.25) <= 1.5 / a.width(), qPrintable(QString::number(view_->splitPosition())));
+  QVERIFY2(std::abs(view_->splitPosition() - 0.25) <= 1.5 / a.width(),
+           qPrintable(QString::number(view_->splitPosition())));
   // Every face follows, and the pixels with it.
   const QImage image = shot();
   QVERIFY(near(image.pixelColor(at(FaceId::E, 0.15, 0.6)), kPhoto));
@@ -163,7 +164,9 @@ void TestFacesCompare::photoAndModelMeetAtTheSameFacePosition() {
     QVERIFY(photoRow > 0);
     QVERIFY2(std::abs(photoRow - modelRow) <= 1,
              qPrintable(QStringLiteral("face %1: photo edge at row %2, model edge at %3")
-                            .arg(faceLetter(face)).arg(photoRow).arg(modelRow)));
+                            .arg(faceLetter(face))
+                            .arg(photoRow)
+                            .arg(modelRow)));
   }
   // And the heat map of the same pair is black away from the edge (the resampled model's edge is soft).
   const QImage map = differenceHeatMap(photos[0], models[0]);
