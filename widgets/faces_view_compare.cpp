@@ -142,7 +142,9 @@ void FacesView::drawDifferenceLegend(QPainter& painter) const {
   font.setBold(false);
   painter.setFont(font);
   const QFontMetricsF metrics(font);
-  const qreal w = 236, line = metrics.height(), barH = 10, pad = 7;
+  const QString hueNote = tr("white: another hue at the same lightness");
+  const qreal pad = 7, line = metrics.height(), barH = 10;
+  const qreal w = std::max<qreal>(236, metrics.horizontalAdvance(hueNote) + 2 * pad + 4);
   const qreal h = pad + line + 3 + barH + 2 + line + line + pad;
   const QRectF box(width() - w - 10, height() - h - 10, w, h);
   painter.setPen(Qt::NoPen);
@@ -175,8 +177,7 @@ void FacesView::drawDifferenceLegend(QPainter& painter) const {
   painter.drawText(labels, Qt::AlignHCenter | Qt::AlignVCenter, tr("same"));
   painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, tr("model lighter"));
   painter.setPen(QColor(170, 170, 170));
-  painter.drawText(labels.translated(0, line), Qt::AlignLeft | Qt::AlignVCenter,
-                   tr("white: another hue · full at ¼ of black-to-white"));
+  painter.drawText(labels.translated(0, line), Qt::AlignLeft | Qt::AlignVCenter, hueNote);
   painter.restore();
 }
 

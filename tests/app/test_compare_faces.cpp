@@ -2,6 +2,7 @@
 // Difference (Ctrl+5) by their shortcuts, the toolbar slider moving the photo | model line, back to
 // Photos (Ctrl+1); saves the pictures of both displays (docs/images/compare_faces.png is the first).
 #include <QSlider>
+#include <QSplitter>
 #include <QtTest>
 
 #include "annotation_layer.hpp"
@@ -127,6 +128,12 @@ void TestCompareFaces::differenceComesWithoutBlocking() {
 }
 
 void TestCompareFaces::savesPictures() {
+  // The faces get most of a large window, so the pictures show the tags and the legend.
+  window_->resize(1600, 1000);
+  auto* splitter = qobject_cast<QSplitter*>(window_->centralWidget());
+  QVERIFY(splitter);
+  splitter->setSizes({1000, 300});
+  QTRY_VERIFY(view()->width() > 800);
   press(4);
   view()->setSplitPosition(0.5);
   QVERIFY(view()->parentWidget()->grab().save(artifact("compare_faces")));
