@@ -10,7 +10,7 @@
 //
 // Compare displays (faces_view_compare.cpp): Split shows each face's photo left of a vertical line and
 // the model right of it, the line at the same fraction of every face's width (splitPosition(); drag it
-// with the left button, where the ring-tracing tools leave the mouse to the view). Difference shows
+// with the left button; the ring-tracing tools step aside on the line). Difference shows
 // where the model departs from the photo as a heat map (face_difference.hpp: black where they agree,
 // orange where the model is lighter, blue where darker) with its legend in the bottom-right corner; the
 // maps are computed off the GUI thread (face_difference_maps.hpp), the model shown dimmed until they
