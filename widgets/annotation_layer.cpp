@@ -494,6 +494,9 @@ bool AnnotationLayer::eventFilter(QObject* watched, QEvent* event) {
 bool AnnotationLayer::mousePress(QMouseEvent* event) {
   const QPointF pos = event->position();
   if (tool_ == Tool::Navigate || spaceHeld_) return false;
+  // The faces view's photo | model line (Split display) is taken before a new trace or selection starts.
+  const bool drafting = !draft_.empty() || pendingKnot_.has_value();
+  if (event->button() == Qt::LeftButton && !drafting && view_->splitLineUnder(pos)) return false;
   if (event->button() == Qt::RightButton && tool_ == Tool::Polyline && !draft_.empty()) {
     finishPolyline();
     return true;
@@ -586,7 +589,7 @@ bool AnnotationLayer::mouseMove(QMouseEvent* event) {
 }
 
 bool AnnotationLayer::mouseRelease(QMouseEvent* event) {
-  if (event->button() != Qt::LeftButton) return false;
+  if (event->button() != Qt::LeftButton || view_->draggingSplit()) return false;
   if (stroking_) {
     finishFreehand();
     return true;

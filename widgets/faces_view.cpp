@@ -13,6 +13,8 @@
 #include <cmath>
 #include <limits>
 
+#include "face_difference_maps.hpp"
+
 namespace kerf {
 
 namespace {
@@ -89,6 +91,11 @@ FacesView::FacesView(QWidget* parent) : QWidget(parent) {
   setMouseTracking(true);
   setAcceptDrops(true);
   setFocusPolicy(Qt::StrongFocus);
+  differences_ = new FaceDifferenceMaps(this);
+  connect(differences_, &FaceDifferenceMaps::ready, this, [this] {
+    update();
+    emit differenceReady();
+  });
 }
 
 // --- Content ----------------------------------------------------------------------------------------
@@ -104,11 +111,15 @@ void FacesView::setBlock(const Block& block) {
 
 void FacesView::setPhotos(const std::array<QImage, 6>& photos) {
   photos_ = photos;
+  differencesStale_ = true;
+  requestDifferences();
   update();
 }
 
 void FacesView::setRenderings(const std::array<QImage, 6>& renderings) {
   renderings_ = renderings;
+  differencesStale_ = true;
+  requestDifferences();
   update();
 }
 
@@ -116,12 +127,16 @@ void FacesView::setFaces(const std::array<QImage, 6>& faces, const Block& block)
   setBlock(block);
   photos_ = faces;
   renderings_ = {};
+  differencesStale_ = true;
+  requestDifferences();
   update();
 }
 
 void FacesView::clear() {
   photos_ = {};
   renderings_ = {};
+  differencesStale_ = true;
+  requestDifferences();
   update();
 }
 
@@ -188,8 +203,16 @@ FacesView::Layers FacesView::layers() const {
       return {&renderings_, nullptr};
     case FaceDisplay::Blend:
       return {&photos_, &renderings_};
+    case FaceDisplay::Split:
+    case FaceDisplay::Difference:
+      return {&photos_, nullptr};  // drawn by drawCompareFace; the photos name the pixels
   }
   return {&photos_, nullptr};
+}
+
+bool FacesView::comparing() const {
+  return (display_ == FaceDisplay::Split || display_ == FaceDisplay::Difference) && anyImage(photos_) &&
+         anyImage(renderings_);
 }
 
 const std::array<QImage, 6>& FacesView::faces() const {
@@ -203,6 +226,7 @@ bool FacesView::hasFaces() const {
 void FacesView::setDisplay(FaceDisplay display) {
   if (display == display_) return;
   display_ = display;
+  requestDifferences();
   emit displayChanged(display);
   update();
 }
@@ -374,6 +398,7 @@ void FacesView::wheelEvent(QWheelEvent* event) {
 }
 
 void FacesView::mousePressEvent(QMouseEvent* event) {
+  if (splitMousePress(event)) return;
   if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && spaceHeld_)) {
     panning_ = true;
     lastMouse_ = event->position();
@@ -385,6 +410,7 @@ void FacesView::mousePressEvent(QMouseEvent* event) {
 }
 
 void FacesView::mouseMoveEvent(QMouseEvent* event) {
+  if (splitMouseMove(event)) return updateCursorText(event->position());
   if (panning_) {
     panBy(event->position() - lastMouse_);
     lastMouse_ = event->position();
@@ -393,6 +419,7 @@ void FacesView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void FacesView::mouseReleaseEvent(QMouseEvent* event) {
+  if (splitMouseRelease(event)) return;
   if (panning_ && (event->button() == Qt::MiddleButton || event->button() == Qt::LeftButton)) {
     panning_ = false;
     if (spaceHeld_)
@@ -556,11 +583,14 @@ void FacesView::paintEvent(QPaintEvent*) {
   }
   const qreal labelSide = std::clamp(smallestSide * 0.14, 16.0, 36.0);
   const Layers shown = layers();
+  const bool compare = comparing();
   for (FaceId face : kAllFaces) {
     const QRectF target = faceRect(face);
     const QImage& base = (*shown.base)[faceIndex(face)];
     const QImage overlay = shown.overlay ? (*shown.overlay)[faceIndex(face)] : QImage();
-    if (base.isNull() && overlay.isNull()) {
+    if (compare) {
+      drawCompareFace(painter, target, face);
+    } else if (base.isNull() && overlay.isNull()) {
       painter.setPen(QPen(QColor(110, 110, 110), 1, Qt::DashLine));
       painter.setBrush(Qt::NoBrush);
       painter.drawRect(target.adjusted(0.5, 0.5, -0.5, -0.5));
@@ -587,6 +617,7 @@ void FacesView::paintEvent(QPaintEvent*) {
   for (FaceId face : kAllFaces) drawOverlay(painter, faceRect(face), face);
   for (FaceId face : kAllFaces) drawLabel(painter, faceRect(face), face, labelSide);  // letters on top
   drawCaption(painter);
+  if (compare && display_ == FaceDisplay::Difference) drawDifferenceLegend(painter);
 }
 
 void FacesView::drawCaption(QPainter& painter) const {

@@ -8,6 +8,16 @@
 // or both with the model blended over the photos at an opacity (FaceDisplay). A set that is empty
 // stands in for the other, so a project without photos still shows its renderings.
 //
+// Compare displays (faces_view_compare.cpp): Split shows each face's photo left of a vertical line and
+// the model right of it, the line at the same fraction of every face's width (splitPosition(); drag it
+// with the left button; the ring-tracing tools step aside on the line). Difference shows
+// where the model departs from the photo as a heat map (face_difference.hpp: black where they agree,
+// orange where the model is lighter, blue where darker) with its legend in the bottom-right corner; the
+// maps are computed off the GUI thread (face_difference_maps.hpp), the model shown dimmed until they
+// come. Photo and model are registered by face position: both are stretched over the whole face, so a
+// photo pixel meets the model at the same place on the wood whatever either's resolution. Faces without
+// a photo show the model, labelled.
+//
 // Navigation: the wheel zooms towards the cursor along a ladder of factors (1 = fit); middle-drag or
 // Space + left-drag pans; F or a double-click fits; +/- zoom about the centre.
 // The cursor's face, pixel and block position (mm) are reported by cursorPositionChanged().
@@ -15,6 +25,7 @@
 // images at once go to the faces their names start with ("A_col.png" -> A); a .kerf file or a folder
 // -> documentDropped(path).
 #include <QColor>
+#include <QCursor>
 #include <QImage>
 #include <QPolygonF>
 #include <QRectF>
@@ -27,11 +38,13 @@
 
 #include "geometry/block.hpp"
 
+class QMouseEvent;
 class QPainter;
 
 namespace kerf {
 
-enum class FaceDisplay { Photos, Model, Blend };
+enum class FaceDisplay { Photos, Model, Blend, Split, Difference };
+inline constexpr int kFaceDisplayCount = 5;
 
 class FacesView : public QWidget {
   Q_OBJECT
@@ -62,6 +75,18 @@ class FacesView : public QWidget {
   // Opacity of the model over the photos in Blend display, 0 (photos only) .. 1 (model only).
   void setBlendOpacity(double opacity);
   double blendOpacity() const { return blendOpacity_; }
+  // Where the line of Split display crosses each face, as a fraction of its width from the left edge:
+  // 0 shows only the model, 1 only the photo.
+  void setSplitPosition(double fraction);
+  double splitPosition() const { return splitPosition_; }
+  // Difference display: the heat maps A..F (null without a photo, or before the first are computed), and
+  // whether they are of the photos and renderings shown now.
+  const std::array<QImage, 6>& differenceMaps() const;
+  bool differenceUpToDate() const;
+  // Split display: whether a left press at a widget point takes the photo | model line, and whether it is
+  // being dragged (the ring-tracing tools, which filter the view's mouse events, step aside for it).
+  bool splitLineUnder(QPointF widgetPos) const { return splitLineAt(widgetPos).has_value(); }
+  bool draggingSplit() const { return splitDrag_.has_value(); }
 
   // Polylines drawn over the faces (ring contours): per face A..F, in the pixel coordinates of an image
   // of imageSizes[face] pixels covering the whole face (continuous coordinates: a pixel's centre is at
@@ -115,6 +140,8 @@ class FacesView : public QWidget {
   void documentDropped(const QString& path);
   void zoomChanged(double zoom);
   void displayChanged(kerf::FaceDisplay display);
+  void splitPositionChanged(double fraction);  // also while the line is dragged
+  void differenceReady();                      // differenceMaps() are up to date
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -145,6 +172,18 @@ class FacesView : public QWidget {
   void drawLabel(QPainter& painter, const QRectF& rect, FaceId face, qreal side) const;
   void drawCaption(QPainter& painter) const;
   void drawOverlay(QPainter& painter, const QRectF& target, FaceId face) const;
+  // Compare displays (faces_view_compare.cpp).
+  bool comparing() const;  // Split or Difference, with photos and renderings
+  void drawCompareFace(QPainter& painter, const QRectF& target, FaceId face) const;
+  void drawSplitFace(QPainter& painter, const QRectF& target, const QImage& photo, const QImage& model) const;
+  void drawDifferenceFace(QPainter& painter, const QRectF& target, FaceId face) const;
+  void drawTag(QPainter& painter, const QRectF& face, const QString& text, Qt::Alignment corner) const;
+  void drawDifferenceLegend(QPainter& painter) const;
+  std::optional<FaceId> splitLineAt(QPointF widgetPos) const;  // a face whose split line is under it
+  bool splitMousePress(QMouseEvent* event);
+  bool splitMouseMove(QMouseEvent* event);
+  bool splitMouseRelease(QMouseEvent* event);
+  void requestDifferences();  // when Difference is shown and its inputs changed
   void updateCursorText(std::optional<QPointF> widgetPos);
   bool acceptDrag(class QDropEvent* event);  // sets dropFace_; true when the drop would do something
 
@@ -157,6 +196,11 @@ class FacesView : public QWidget {
   Block block_;
   FaceDisplay display_ = FaceDisplay::Photos;
   double blendOpacity_ = 0.5;
+  double splitPosition_ = 0.5;
+  std::optional<FaceId> splitDrag_;           // the face whose split line is being dragged
+  std::optional<QCursor> cursorBeforeSplit_;  // while the cursor shows the split line can be dragged
+  class FaceDifferenceMaps* differences_ = nullptr;
+  bool differencesStale_ = true;  // photos or renderings changed since the last request
   QString placeholder_;
   QString captionTitle_, captionDetail_;
 

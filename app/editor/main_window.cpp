@@ -18,6 +18,8 @@
 #include <QToolBar>
 #include <QUndoView>
 #include <QVBoxLayout>
+#include <cmath>
+#include <iterator>
 
 #include "autosave.hpp"
 #include "params/builtin_presets.hpp"
@@ -84,16 +86,23 @@ void MainWindow::createViews() {
   facesView_->setPlaceholderText(tr("Opening…"));
   viewport_ = new Viewport3D(this);
 
-  // Above the faces: what they show, and how much of the model is blended over the photos.
+  // Above the faces: what they show, how much of the model is blended over the photos, where the
+  // photo | model line of Split lies.
   auto* facesPane = new QWidget(this);
   auto* facesBar = new QToolBar(facesPane);
   facesBar->setIconSize(QSize(16, 16));
   displayGroup_ = new QActionGroup(this);
-  const QString names[] = {tr("Photos"), tr("Model"), tr("Blend")};
-  const QString tips[] = {tr("Show the photographs of the faces (Ctrl+1)"),
-                          tr("Show the model's rendering of the faces (Ctrl+2)"),
-                          tr("Show the model over the photos; the slider sets how much (Ctrl+3)")};
-  for (int i = 0; i < 3; ++i) {
+  const QString names[] = {tr("Photos"), tr("Model"), tr("Blend"), tr("Split"), tr("Difference")};
+  const QString tips[] = {
+      tr("Show the photographs of the faces (Ctrl+1)"),
+      tr("Show the model's rendering of the faces (Ctrl+2)"),
+      tr("Show the model over the photos; the slider sets how much (Ctrl+3)"),
+      tr("Compare: each face's photo left of a line, the model's wood right of it; drag the line (or the "
+         "slider) across the faces to see where the rings and the colour part (Ctrl+4)"),
+      tr("Compare: where the model's wood departs from the photo, as a heat map: black where they agree, "
+         "orange where the model is lighter than the photo, blue where it is darker (Ctrl+5)")};
+  static_assert(std::size(names) == kFaceDisplayCount);
+  for (int i = 0; i < kFaceDisplayCount; ++i) {
     QAction* action = facesBar->addAction(names[i]);
     action->setCheckable(true);
     action->setToolTip(tips[i]);
@@ -109,10 +118,14 @@ void MainWindow::createViews() {
   blendSlider_->setRange(0, 100);
   blendSlider_->setValue(50);
   blendSlider_->setMaximumWidth(160);
-  blendSlider_->setToolTip(tr("Opacity of the model over the photos in Blend mode"));
   facesBar->addWidget(blendSlider_);
-  connect(blendSlider_, &QSlider::valueChanged, this,
-          [this](int v) { facesView_->setBlendOpacity(v / 100.0); });
+  connect(blendSlider_, &QSlider::valueChanged, this, [this](int v) {
+    if (displayMode_ == static_cast<int>(FaceDisplay::Split))
+      facesView_->setSplitPosition(v / 100.0);
+    else
+      facesView_->setBlendOpacity(v / 100.0);
+  });
+  connect(facesView_, &FacesView::splitPositionChanged, this, [this] { updateFaceSlider(); });
   auto* facesLayout = new QVBoxLayout(facesPane);
   facesLayout->setContentsMargins(0, 0, 0, 0);
   facesLayout->setSpacing(0);
@@ -329,14 +342,34 @@ void MainWindow::updateFacesView() {
     action->setChecked(action->data().toInt() == displayMode_);
     action->setEnabled(photos || action->data().toInt() == 1);
   }
-  blendSlider_->setEnabled(displayMode_ == 2);
   facesView_->setDisplay(static_cast<FaceDisplay>(displayMode_));
+  updateFaceSlider();
   toggleViewAction_->setEnabled(photos);
   toggleViewAction_->setText(showingPhotos() ? tr("Show &Model Rendering") : tr("Show &Photos"));
   const QString shortcut = toggleViewAction_->shortcut().toString(QKeySequence::NativeText);
-  static const QString titles[] = {tr("Photos"), tr("Model rendering"), tr("Model over photos")};
+  static const QString titles[] = {tr("Photos"), tr("Model rendering"), tr("Model over photos"),
+                                   tr("Photo | model"), tr("Model against photo")};
+  static_assert(std::size(titles) == kFaceDisplayCount);
+  const QString toggle = photos ? tr("%1: photos / model").arg(shortcut) : QString();
+  const bool split = displayMode_ == static_cast<int>(FaceDisplay::Split);
   facesView_->setCaption(hasDocument_ ? titles[displayMode_] : QString(),
-                         photos ? tr("%1: photos / model").arg(shortcut) : QString());
+                         split ? tr("drag the line · %1").arg(toggle) : toggle);
+}
+
+// One slider, two meanings: the model's opacity in Blend, the photo | model line in Split.
+void MainWindow::updateFaceSlider() {
+  const bool split = displayMode_ == static_cast<int>(FaceDisplay::Split);
+  const QSignalBlocker blocker(blendSlider_);
+  blendSlider_->setEnabled(split || displayMode_ == static_cast<int>(FaceDisplay::Blend));
+  blendSlider_->setValue(static_cast<int>(
+      std::lround(100 * (split ? facesView_->splitPosition() : facesView_->blendOpacity()))));
+  const QString tip = split ? tr("Where the line between photo (left) and model (right) crosses the faces")
+                            : tr("Opacity of the model over the photos in Blend mode");
+  blendSlider_->setToolTip(tip);
+}
+
+QList<QAction*> MainWindow::faceDisplayActions() const {
+  return displayGroup_->actions();
 }
 
 void MainWindow::setFaceDisplay(int display) {

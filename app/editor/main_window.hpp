@@ -88,6 +88,10 @@ class MainWindow : public QMainWindow {
   LogPanel* log() const { return log_; }
   Autosave* autosave() const { return autosave_; }
   QAction* toggleViewAction() const { return toggleViewAction_; }
+  // Photos, Model, Blend, Split, Difference (FaceDisplay order; Ctrl+1 .. Ctrl+5), and the slider of Blend
+  // (opacity) and Split (where the line lies).
+  QList<QAction*> faceDisplayActions() const;
+  QSlider* faceSlider() const { return blendSlider_; }
   QAction* undoAction() const { return undoAction_; }
   QAction* redoAction() const { return redoAction_; }
 
@@ -223,6 +227,7 @@ class MainWindow : public QMainWindow {
   void showFitResiduals(const GrowthFitResult& fit);
   void useOtherPithCandidate();
   void updateFacesView();
+  void updateFaceSlider();
   void setFaceDisplay(int display);
   void toggleView();
   void dropPhoto(FaceId face, const QString& path);
