@@ -34,6 +34,7 @@ Command addExportVolumeCommand(CLI::App& app);
 Command addParamsCommand(CLI::App& app);
 Command addDetectCommand(CLI::App& app);
 Command addFitCommand(CLI::App& app);
+Command addReconstructCommand(CLI::App& app);  // reconstruct_command.cpp
 Command addAnnotationsCommand(CLI::App& app);
 Command addRenderBoardCommand(CLI::App& app);
 Command addRenderPanelCommand(CLI::App& app);  // render_panel_command.cpp

@@ -1,6 +1,5 @@
 // detect: automatic ring localization on the face photos of a sample folder or project
 // (Mokume Sec. 5.1): DIR/A_arl.png .. F_arl.png and DIR/contours.json (docs/rings.md).
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,8 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
-#include "rings/contours.hpp"
-#include "rings/ring_detector.hpp"
+#include "rings/detect_block_rings.hpp"
 #include "util/error.hpp"
 
 namespace fs = std::filesystem;
@@ -51,44 +49,38 @@ Command addDetectCommand(CLI::App& app) {
           std::printf("held out (the project's held_out_faces): %s, not detected\n",
                       project.heldOutFaces.letters().c_str());
         createOutputFolder(o->out);
+        std::array<Image, 6> photos;
+        for (FaceId face : faces) photos[faceIndex(face)] = readImage(project.facePhotos[faceIndex(face)]);
         const ClassicalRingDetector detector;
+        const BlockRingDetection detection =
+            detectBlockRings(photos, project.block, project.heldOutFaces, context.progress(), detector);
         nlohmann::json facesJson = nlohmann::json::object();
-        std::string summary;
-        for (std::size_t i = 0; i < faces.size(); ++i) {
-          const FaceId face = faces[i];
+        for (FaceId face : faces) {
+          const DetectedFaceRings& rings = *detection.faces[faceIndex(face)];
           const std::string letter(1, faceLetter(face));
           const fs::path photoPath = project.facePhotos[faceIndex(face)];
-          const Image photo = readImage(photoPath);
-          const FaceFrame frame = project.block.face(face);
-          const float pxPerMmX = photo.width / frame.widthMm, pxPerMmY = photo.height / frame.heightMm;
-          if (std::abs(pxPerMmX - pxPerMmY) > 0.03f * std::max(pxPerMmX, pxPerMmY))
+          const Image& photo = photos[faceIndex(face)];
+          if (!rings.squarePixels()) {
+            const FaceFrame frame = project.block.face(face);
             std::fprintf(stderr,
                          "kerf-cli: warning: face %s photo %s is %dx%d px but the face is %.4g x %.4g mm; "
                          "the pixels are not square\n",
                          letter.c_str(), photoPath.filename().c_str(), photo.width, photo.height,
                          frame.widthMm, frame.heightMm);
-          const Progress base = context.progress();
-          Progress progress = base;
-          const double from = static_cast<double>(i) / faces.size(), span = 1.0 / faces.size();
-          progress.report = base.report ? std::function<void(double)>(
-                                              [base, from, span](double f) { base.report(from + span * f); })
-                                        : nullptr;
-          const Image arl = detector.localize(photo, 0.5f * (pxPerMmX + pxPerMmY), progress);
-          writeImage(fs::path(o->out) / (letter + "_arl.png"), arl);
-          const auto contours = extractContours(arl, face);
+          }
+          writeImage(fs::path(o->out) / (letter + "_arl.png"), rings.arl);
           nlohmann::json list = nlohmann::json::array();
-          for (const FaceContour& c : contours) {
+          for (const FaceContour& c : rings.contours) {
             nlohmann::json points = nlohmann::json::array();
             for (const glm::ivec2& p : c.pixels) points.push_back({p.x, p.y});
             list.push_back(std::move(points));
           }
           facesJson[letter] = {{"photo", photoPath.filename().string()},
                                {"arl", letter + "_arl.png"},
-                               {"width", arl.width},
-                               {"height", arl.height},
-                               {"px_per_mm", 0.5 * (pxPerMmX + pxPerMmY)},
+                               {"width", rings.arl.width},
+                               {"height", rings.arl.height},
+                               {"px_per_mm", rings.meanPxPerMm()},
                                {"contours", std::move(list)}};
-          summary += " " + letter + ":" + std::to_string(contours.size());
           context.samples += static_cast<std::size_t>(photo.width) * photo.height;
         }
         const nlohmann::json document = {
@@ -101,8 +93,8 @@ Command addDetectCommand(CLI::App& app) {
              "(x + 0.5, y + 0.5)"},
             {"faces", std::move(facesJson)}};
         writeTextAtomically(fs::path(o->out) / "contours.json", document.dump() + "\n");
-        std::printf("rings written to %s (%zu faces: <face>_arl.png, contours.json); contours per face:%s\n",
-                    o->out.c_str(), faces.size(), summary.c_str());
+        std::printf("rings written to %s (%zu faces: <face>_arl.png, contours.json); contours per face: %s\n",
+                    o->out.c_str(), faces.size(), detection.countsText().c_str());
       }};
 }
 

@@ -11,7 +11,7 @@
 #include "io/project.hpp"
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"
-#include "texture/texture_inference.hpp"
+#include "texture_step.hpp"
 #include "util/error.hpp"
 
 namespace kerf::cli {
@@ -125,24 +125,19 @@ Command addTextureCommand(CLI::App& app) {
         options.search.maxSweeps = o->sweeps;
         options.coarseSearch = !o->noCoarse;
         options.refitColours = !o->keepColours;
-        options.heldOut = project.heldOutFaces;
         if (!o->parameters.empty()) {
           std::string list = o->parameters;
           std::replace(list.begin(), list.end(), ',', ' ');
           std::istringstream words(list);
           for (std::string id; words >> id;) options.parameters.push_back(id);
         }
-        const GrowthRates rates = project.effectiveRates();
-        const TextureInferenceResult result =
-            inferTexture(project.block, project.params, rates, photos, options, context.progress());
-        for (const std::string& line : formatTextureInferenceReport(result))
-          std::printf("%s\n", line.c_str());
-        context.samples += static_cast<std::size_t>(result.evaluations) * result.crops * o->cropSize *
-                           o->cropSize * o->samples * o->samples;
+        const WoodParameters fitted = project.params;
+        inferProjectTexture(project, photos, options, context);
         if (!o->compare.empty()) {
           std::array<Image, 6> before, after;
-          const WoodModel beforeModel(project.block, project.params, rates);
-          const WoodModel afterModel(project.block, result.params, rates);
+          const GrowthRates rates = project.effectiveRates();
+          const WoodModel beforeModel(project.block, fitted, rates);
+          const WoodModel afterModel(project.block, project.params, rates);
           for (FaceId face : kAllFaces) {
             const Image& photo = photos[faceIndex(face)];
             if (photo.empty()) continue;
@@ -152,8 +147,6 @@ Command addTextureCommand(CLI::App& app) {
           writeImage(o->compare, comparisonSheet(photos, before, after));
           std::printf("comparison written to %s\n", o->compare.c_str());
         }
-        project.params = result.params;
-        if (!project.rates) project.rates = rates;
         saveProject(project, o->out);
         std::printf("project written to %s\n", o->out.c_str());
       }};

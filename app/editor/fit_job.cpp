@@ -5,10 +5,8 @@
 
 #include "fit/growth_field_fit.hpp"
 #include "qt_image.hpp"
-#include "rings/contours.hpp"
-#include "rings/ring_detector.hpp"
+#include "rings/detect_block_rings.hpp"
 #include "util/error.hpp"
-#include "util/resource_usage.hpp"
 
 namespace kerf {
 
@@ -21,30 +19,20 @@ int RingDetection::contourCount() const {
 }
 
 RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& block, const Progress& progress) {
-  int withPhoto = 0;
-  for (const QImage& photo : photos) withPhoto += !photo.isNull();
-  if (withPhoto == 0)
+  if (std::all_of(photos.begin(), photos.end(), [](const QImage& photo) { return photo.isNull(); }))
     throw InputError(
         "there are no face photos to detect rings on; open a sample folder or drop photos on the faces");
-  const ClassicalRingDetector detector;
+  std::array<Image, 6> images;
+  for (int i = 0; i < 6; ++i)
+    if (!photos[i].isNull()) images[i] = fromQImage(photos[i]);
+  const BlockRingDetection found = detectBlockRings(images, block, {}, progress);
   RingDetection detection;
-  int done = 0;
-  for (FaceId face : kAllFaces) {
-    const int i = faceIndex(face);
-    if (photos[i].isNull()) continue;
-    const Stopwatch clock;
-    const FaceFrame frame = block.face(face);
-    const float pxPerMm = 0.5f * (photos[i].width() / frame.widthMm + photos[i].height() / frame.heightMm);
-    const Image arl =
-        detector.localize(fromQImage(photos[i]), pxPerMm,
-                          progress.part(double(done) / withPhoto, double(done + 1) / withPhoto));
-    progress.throwIfCancelled();
-    for (const FaceContour& contour : extractContours(arl, face))
-      detection.contours[i].push_back(contour.pixels);
-    detection.arl[i] = toGray8(arl);
-    detection.seconds[i] = clock.seconds();
+  for (int i = 0; i < 6; ++i) {
+    if (!found.faces[i]) continue;
+    for (const FaceContour& contour : found.faces[i]->contours) detection.contours[i].push_back(contour.pixels);
+    detection.arl[i] = toGray8(found.faces[i]->arl);
+    detection.seconds[i] = found.faces[i]->seconds;
     ++detection.facesDetected;
-    ++done;
   }
   return detection;
 }

@@ -1,5 +1,6 @@
 #include "io/project.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -250,17 +251,9 @@ Project projectFromSampleFolder(const fs::path& folder, std::optional<glm::vec3>
   Project project;
   const std::optional<glm::vec3> fromFile = blockSize ? std::nullopt : readSampleBlockSize(folder);
   project.block = Block(blockSize ? *blockSize : fromFile.value_or(glm::vec3(40.0f)));
-  int found = 0;
-  for (FaceId face : kAllFaces) {
-    for (const char* ext : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".PNG", ".JPG"}) {
-      const fs::path candidate = folder / (std::string(1, faceLetter(face)) + "_col" + ext);
-      if (fs::exists(candidate)) {
-        project.facePhotos[faceIndex(face)] = fs::absolute(candidate).lexically_normal();
-        ++found;
-        break;
-      }
-    }
-  }
+  project.facePhotos = findSampleFacePhotos(folder);
+  const auto found = std::count_if(project.facePhotos.begin(), project.facePhotos.end(),
+                                   [](const fs::path& photo) { return !photo.empty(); });
   if (found == 0) {
     throw InputError("folder " + folder.string() + " holds no face photos (expected A_col.png .. F_col.png)");
   }

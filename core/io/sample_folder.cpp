@@ -80,6 +80,19 @@ std::optional<glm::vec3> readSampleBlockSize(const fs::path& folder) {
   return size;
 }
 
+std::array<fs::path, 6> findSampleFacePhotos(const fs::path& folder) {
+  std::array<fs::path, 6> photos;
+  for (FaceId face : kAllFaces)
+    for (const char* ext : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".PNG", ".JPG"}) {
+      const fs::path candidate = folder / (std::string(1, faceLetter(face)) + "_col" + ext);
+      if (fs::exists(candidate)) {
+        photos[faceIndex(face)] = fs::absolute(candidate).lexically_normal();
+        break;
+      }
+    }
+  return photos;
+}
+
 void validateSampleFolder(const std::array<fs::path, 6>& photos, const MokumeAnnotationFiles& annotations,
                           const Block& block, bool blockFromFile) {
   std::array<glm::ivec2, 6> sizes{};
@@ -92,7 +105,8 @@ void validateSampleFolder(const std::array<fs::path, 6>& photos, const MokumeAnn
     const glm::vec2 mm = faceSizeMm(block, face);
     if (sameProportions(sizes[i], mm)) continue;
     if (cube) {
-      throw InputError(name(photos[i]) + " is " + sizeText(sizes[i]) + ", not square, but the block is a " +
+      throw InputError(std::string("face ") + faceLetter(face) + " photo " + name(photos[i]) + " is " +
+                       sizeText(sizes[i]) + ", not square, but the block is a " +
                        mmText(blockSize.x) + " mm cube" +
                        (blockFromFile
                             ? std::string()

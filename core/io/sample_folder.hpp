@@ -16,6 +16,10 @@ namespace kerf {
 // 40 mm cube. nullopt when absent; InputError when malformed.
 std::optional<glm::vec3> readSampleBlockSize(const std::filesystem::path& folder);
 
+// The face photos A_col.png .. F_col.png (also .jpg, .jpeg, .tif, .tiff) of a sample folder, A..F as
+// absolute paths; empty where a face has none.
+std::array<std::filesystem::path, 6> findSampleFacePhotos(const std::filesystem::path& folder);
+
 // The face photos (empty paths are missing faces) must be readable and agree with each other and the
 // block: faces that share a block axis have the same number of pixels along it (opposite faces are the
 // same size and edges that touch in the unfolded cross meet pixel for pixel), each photo has the

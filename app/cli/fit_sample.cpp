@@ -1,0 +1,177 @@
+#include "fit_sample.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "fit/growth_field_fit.hpp"
+#include "fit/held_out_faces.hpp"
+#include "hold_out_option.hpp"
+#include "io/gray_image.hpp"
+#include "io/sample_folder.hpp"
+#include "params/builtin_presets.hpp"
+#include "rings/detect_block_rings.hpp"
+#include "util/error.hpp"
+
+namespace kerf::cli {
+
+namespace fs = std::filesystem;
+
+void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
+  command->add_option("--principal", o.principal, "Expected pith direction: the block axis x, y or z (default y)")
+      ->check(CLI::IsMember({"x", "y", "z"}));
+  command->add_flag("--pith-only", o.pithOnly, "Step 1 only: no growth-rate (distortion) fit; uniform rates");
+  command->add_flag("--ignore-anatomy", o.ignoreAnatomy,
+                    "Fit the pith to the ring contours alone; the fibre direction seen in the photos "
+                    "(X_col.png) is still reported");
+  command->add_flag("--ignore-traces", o.ignoreTraces,
+                    "Fit the ring-localization images' contours only (detected from the photos where there "
+                    "are none), not the sample's or project's ring traces");
+  command
+      ->add_option("--anatomy-weight", o.anatomyWeight,
+                   "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
+      ->check(CLI::Range(0.0, 100.0));
+  command->add_option("--species", o.species,
+                      "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri "
+                      "or nara (kerf-cli params --presets lists them). Default: a sample folder named by its "
+                      "Mokume code (CN03) gets that species; a project keeps its own wood; 'none' keeps the "
+                      "defaults");
+  addHoldOutFaceOption(command, o.holdOut);
+}
+
+namespace {
+
+// The document, its photos' sizes checked before any other work (io/sample_folder.hpp). A folder without
+// photos is fine: its ring images alone can be fitted.
+Project loadSample(const fs::path& sample, bool isProject) {
+  if (isProject) {
+    Project project = loadProject(sample);
+    std::array<fs::path, 6> present = project.facePhotos;  // a project may name photos that are gone
+    for (fs::path& photo : present)
+      if (!photo.empty() && !fs::exists(photo)) photo.clear();
+    validateSampleFolder(present, {}, project.block, true);
+    return project;
+  }
+  const std::array<fs::path, 6> photos = findSampleFacePhotos(sample);
+  if (std::any_of(photos.begin(), photos.end(), [](const fs::path& p) { return !p.empty(); }))
+    return projectFromSampleFolder(sample);
+  Project project;
+  project.block = Block(readSampleBlockSize(sample).value_or(glm::vec3(40.0f)));
+  return project;
+}
+
+const Preset* chosenSpecies(const FitSampleOptions& o, const fs::path& folder, bool isProject) {
+  if (!o.species.empty() && o.species != "none") {
+    const Preset* species = builtInPreset(o.species);
+    if (!species) throw InputError("--species " + o.species + ": no such species preset");
+    return species;
+  }
+  if (!o.species.empty() || isProject) return nullptr;
+  fs::path name = fs::absolute(folder).lexically_normal();
+  if (name.filename().empty()) name = name.parent_path();  // "CN03/"
+  return builtInPresetForSampleName(name.filename().string());
+}
+
+}  // namespace
+
+FittedSample fitSample(const FitSampleOptions& o, Context& context) {
+  FaceSet heldOut = heldOutFacesFromOption(o.holdOut);  // bad letters fail before any work
+  const fs::path sample = o.sample;
+  const bool isProject = fs::is_regular_file(sample);
+  if (!isProject && !fs::is_directory(sample))
+    throw InputError("not a sample folder or project file: " + sample.string());
+  const fs::path folder = isProject ? sample.parent_path() : sample;
+  FittedSample fitted{loadSample(sample, isProject), {}, 0};
+  Project& project = fitted.project;
+
+  // The species: what the texture starts from, before the colours are fitted to the photos.
+  if (const Preset* species = chosenSpecies(o, folder, isProject)) {
+    project.params = species->applyTo(project.params);
+    std::printf("species: %s (%s)%s\n", species->name.c_str(), species->id.c_str(),
+                o.species.empty() ? ", from the sample's name; --species to choose another" : "");
+  }
+  // A project's held-out faces stay held out: the option adds to them, it never brings a photo back.
+  heldOut |= project.heldOutFaces;
+  try {
+    requireFaceLeftToFit(heldOut);
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (with " + sample.string() + "'s own held_out_faces " +
+                     project.heldOutFaces.letters() + ")");
+  }
+  project.heldOutFaces = heldOut;
+
+  GrowthFieldFitInput input;
+  input.heldOut = heldOut;  // the fit drops whatever of these faces is below (fit/held_out_faces.hpp)
+  if (!o.ignoreTraces) input.traces = project.annotations.traces;
+  input.knotMarks = project.annotations.knots;  // knots of the field (Mokume Sec. 5.2.4)
+  // Photos: the anatomical prior (fit/anatomy_prior.hpp), the colours, and the rings where there is no
+  // ring image. A held-out face's photo is not even read.
+  for (FaceId face : kAllFaces) {
+    const fs::path& file = project.facePhotos[faceIndex(face)];
+    if (!heldOut.contains(face) && !file.empty() && fs::exists(file))
+      fitted.photos[faceIndex(face)] = readImage(file);
+  }
+  std::array<std::string, 6> sources;  // where each face's rings come from, for the report
+  std::array<Image, 6> toDetect;
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    if (heldOut.contains(face)) continue;  // not even read: a held-out face's ring image is its photo's
+    const fs::path file = findRingLocalizationImage(folder, face);
+    if (!file.empty()) {
+      input.rings[i] = readRingLocalizationImage(file);
+      sources[i] = "from " + file.filename().string();
+    } else if (!fitted.photos[i].empty() && input.traces.empty()) {
+      // Photos alone: find the rings as the editor's Detect Rings does (Mokume Sec. 5.1).
+      std::printf("face %c: no ring map; rings detected from the photo\n", faceLetter(face));
+      toDetect[i] = fitted.photos[i];
+      sources[i] = "detected from " + project.facePhotos[i].filename().string();
+    } else if (input.traces.empty()) {  // a sample traced by hand needs no ring images
+      std::fprintf(stderr,
+                   "kerf-cli: warning: face %c has no ring-localization image (%c_arl*.png) and no photo; "
+                   "skipped\n",
+                   faceLetter(face), faceLetter(face));
+    }
+  }
+  if (std::any_of(toDetect.begin(), toDetect.end(), [](const Image& photo) { return !photo.empty(); })) {
+    std::fflush(stdout);  // the lines above before the progress on stderr
+    const BlockRingDetection detection = detectBlockRings(toDetect, project.block, heldOut, context.progress());
+    for (int i = 0; i < 6; ++i)
+      if (detection.faces[i]) input.rings[i] = toGray8(detection.faces[i]->arl);
+    fitted.facesDetected = detection.faceCount();
+  }
+  input.photos = fitted.photos;
+
+  GrowthFieldFitOptions options;
+  options.principal = o.principal == "x"   ? glm::vec3(1, 0, 0)
+                      : o.principal == "z" ? glm::vec3(0, 0, 1)
+                                           : glm::vec3(0, 1, 0);
+  options.pithOnly = o.pithOnly;
+  options.useAnatomy = !o.ignoreAnatomy;
+  options.anatomyWeight = o.anatomyWeight;
+  const GrowthFieldFitResult fit = [&] {
+    try {
+      return fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());
+    } catch (const InputError& e) {  // the fit knows no file names: say which sample failed
+      throw InputError(std::string(e.what()) + " (fitting " + sample.string() + ")");
+    }
+  }();
+  for (FaceId face : kAllFaces)
+    if (!sources[faceIndex(face)].empty())
+      std::printf("face %c: %d contours %s\n", faceLetter(face), fit.report.contoursPerFace[faceIndex(face)],
+                  sources[faceIndex(face)].c_str());
+  for (const std::string& line : formatGrowthFieldFitReport(fit.report)) {
+    if (line.rfind("warning: ", 0) == 0)
+      std::fprintf(stderr, "kerf-cli: %s\n", line.c_str());
+    else
+      std::printf("%s\n", line.c_str());
+  }
+  project.params = fit.params;
+  project.knots = fit.knots;
+  project.rates = fit.rates ? *fit.rates
+                            : GrowthRates::uniform(project.block,
+                                                   PithAxis::fromAngles(fit.params.pithOrigin, fit.params.pithTilt,
+                                                                        fit.params.pithAzimuth));
+  return fitted;
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,62 @@
+#include "rings/detect_block_rings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/error.hpp"
+#include "util/resource_usage.hpp"
+
+namespace kerf {
+
+bool DetectedFaceRings::squarePixels() const {
+  return std::abs(pxPerMm.x - pxPerMm.y) <= 0.03f * std::max(pxPerMm.x, pxPerMm.y);
+}
+
+int BlockRingDetection::faceCount() const {
+  return static_cast<int>(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.has_value(); }));
+}
+
+int BlockRingDetection::contourCount() const {
+  int n = 0;
+  for (const auto& face : faces)
+    if (face) n += static_cast<int>(face->contours.size());
+  return n;
+}
+
+std::string BlockRingDetection::countsText() const {
+  std::string text;
+  for (FaceId face : kAllFaces)
+    if (const auto& f = faces[faceIndex(face)])
+      text += std::string(text.empty() ? "" : " ") + faceLetter(face) + ":" + std::to_string(f->contours.size());
+  return text;
+}
+
+BlockRingDetection detectBlockRings(const std::array<Image, 6>& photos, const Block& block,
+                                    const FaceSet& heldOut, const Progress& progress,
+                                    const RingDetector& detector) {
+  std::vector<FaceId> faces;
+  for (FaceId face : kAllFaces)
+    if (!heldOut.contains(face) && !photos[faceIndex(face)].empty()) faces.push_back(face);
+  if (faces.empty())
+    throw InputError(heldOut.empty() ? "there are no face photos to detect rings on"
+                                     : "there are no face photos to detect rings on besides the held-out "
+                                       "faces " + heldOut.letters());
+  BlockRingDetection detection;
+  const double share = 1.0 / static_cast<double>(faces.size());
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const FaceId face = faces[k];
+    const Image& photo = photos[faceIndex(face)];
+    const Stopwatch clock;
+    const FaceFrame frame = block.face(face);
+    DetectedFaceRings rings;
+    rings.pxPerMm = {photo.width / frame.widthMm, photo.height / frame.heightMm};
+    rings.arl = detector.localize(photo, rings.meanPxPerMm(), progress.part(k * share, (k + 1) * share));
+    progress.throwIfCancelled();
+    rings.contours = extractContours(rings.arl, face);
+    rings.seconds = clock.seconds();
+    detection.faces[faceIndex(face)] = std::move(rings);
+  }
+  return detection;
+}
+
+}  // namespace kerf
