@@ -8,4 +8,9 @@ bash scripts/install-deps.sh
 cmake -S . -B build/test -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build/test
 cd build/test
-ctest --output-on-failure -j "$(nproc)" --timeout 600
+# Behaviour in parallel; then, alone and one at a time, the latency measurements (ctest label `timing`,
+# tests/timing_checks.hpp), which a busy machine would otherwise fail. Both run; either failing fails.
+status=0
+ctest --output-on-failure -j "$(nproc)" --timeout 600 -LE timing || status=1
+ctest --output-on-failure --timeout 600 -L timing || status=1
+exit "$status"

@@ -65,6 +65,7 @@ CutView::CutView(QWidget* parent) : QOpenGLWidget(parent) {
   setMinimumSize(minimumSizeHint());
   pixelsPerMm_ = screenPixelsPerMm();
 
+  setClock(nullptr);
   refineTimer_.setSingleShot(true);
   refineTimer_.setInterval(kRefineDelayMs);
   connect(&refineTimer_, &QTimer::timeout, this, [this] {
@@ -242,6 +243,19 @@ void CutView::setForcedRenderScale(int scale) {
   update();
 }
 
+void CutView::setClock(Clock clock) {
+  if (!clock)
+    clock = [timer = std::make_shared<QElapsedTimer>()] {
+      if (!timer->isValid()) timer->start();
+      return timer->elapsed();
+    };
+  clock_ = std::move(clock);
+  // A new clock starts without a stream of changes.
+  lastChangeMs_.reset();
+  interactive_ = false;
+  refineTimer_.stop();
+}
+
 void CutView::setInteractiveFrameBudgetMs(double ms) {
   budgetMs_ = std::max(1.0, ms);
 }
@@ -294,8 +308,9 @@ void CutView::changedInteractively() {
   // A change soon after the previous one (allowing for the time the last frame took) is part of a
   // stream: draw it fast and refine when the stream pauses.
   const double window = kRefineDelayMs + lastFrameMs_;
-  if (lastChange_.isValid() && lastChange_.elapsed() < window) interactive_ = true;
-  lastChange_.start();
+  const qint64 now = clock_();
+  if (lastChangeMs_ && now - *lastChangeMs_ < window) interactive_ = true;
+  lastChangeMs_ = now;
   refineTimer_.start();
 }
 

@@ -31,6 +31,7 @@
 #include <QPolygonF>
 #include <QString>
 #include <QTimer>
+#include <functional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
@@ -99,6 +100,11 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void setForcedRenderScale(int scale);         // 0 = adaptive; 1.. = always that (measurements)
   void setInteractiveFrameBudgetMs(double ms);  // default 30
   static constexpr int kRefineDelayMs = 150;
+  // The clock (milliseconds, monotonic) that tells a stream of changes from single ones. Tests set a
+  // clock they advance themselves, so what they check does not depend on how busy the machine is.
+  // nullptr: the real (steady) clock, the default.
+  using Clock = std::function<qint64()>;
+  void setClock(Clock clock);
 
   // Actions with their shortcuts (1, F, +, -) for menus and toolbars; they act on this view.
   QAction* actualSizeAction() const { return actualSizeAction_; }
@@ -179,7 +185,8 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   int forcedScale_ = 0;
   double budgetMs_ = 30.0;
   bool interactive_ = false;
-  QElapsedTimer lastChange_;
+  Clock clock_;
+  std::optional<qint64> lastChangeMs_;
   QTimer refineTimer_;
   double msPerMegapixel_ = -1.0;  // measured cost of a full-resolution frame (smoothed)
   int lastScale_ = 1;

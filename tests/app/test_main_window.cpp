@@ -284,7 +284,7 @@ void TestMainWindow::draggingTheCutPlaneChangesTheCutPanel() {
   QVERIFY2(moved.offsetMm < 4.0f, qPrintable(QString("offset %1").arg(moved.offsetMm)));
   QCOMPARE(window_->document()->undoStack()->count(), steps + 1);  // the whole drag is one step
   QCOMPARE(window_->cutControls()->setting(), moved);
-  QTRY_VERIFY_WITH_TIMEOUT(changedShare(cutView->grabFramebuffer(), cutBefore) > 0.02, 5000);
+  QTRY_VERIFY_WITH_TIMEOUT(changedShare(cutView->grabFramebuffer(), cutBefore) > 0.02, 30000);
   QVERIFY(cutView->grabFramebuffer().save(artifact("main_window_cut_panel")));
 }
 

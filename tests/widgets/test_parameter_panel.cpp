@@ -26,6 +26,7 @@
 #include "params/builtin_presets.hpp"
 #include "cut_plane_controls.hpp"
 #include "parameter_panel.hpp"
+#include "../timing_checks.hpp"
 
 using namespace kerf;
 
@@ -127,7 +128,7 @@ class ParameterPanelTest : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
     qInfo() << "ParameterPanel with" << panel.rowCount() << "rows built in" << buildMs << "ms";
     QCOMPARE(panel.rowCount(), static_cast<int>(parameterSchema().size()));
-    QVERIFY(buildMs < 300);  // typically ~30 ms; generous for loaded CI machines
+    if (kerf::testing::timingChecks()) QVERIFY(buildMs < 300);  // typically ~30 ms
     for (std::size_t i = 0; i < parameterSchema().size(); ++i) {
       const QString id = QString::fromUtf8(parameterSchema()[i].id.data(), parameterSchema()[i].id.size());
       QWidget* row = panel.row(static_cast<int>(i));

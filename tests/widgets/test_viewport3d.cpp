@@ -534,7 +534,8 @@ class Viewport3DTest : public QObject {
   void orbitDragRendersReducedThenRefines() {
     view_->setCutEnabled(false);
     view_->setReducedResolutionDivisor(3);
-    view_->setRefineDelayMs(150);
+    // The refine timer may not fire between the drag and the grab, however slow the machine: a minute.
+    view_->setRefineDelayMs(60000);
     view_->resetCamera();
     view_->grabFramebuffer();
     QCOMPARE(view_->lastFrameDivisor(), 1);  // a key-press-like change renders full resolution
@@ -546,7 +547,8 @@ class Viewport3DTest : public QObject {
     QCOMPARE(view_->lastFrameDivisor(), 3);
     QVERIFY(reduced.save(artifact("orbit_reduced")));
     QTest::mouseRelease(view_.get(), Qt::LeftButton, Qt::NoModifier, QPoint(60, 30));
-    QTRY_VERIFY_WITH_TIMEOUT(view_->lastFrameDivisor() == 1, 5000);
+    view_->setRefineDelayMs(150);  // restarts the pending refine with this delay
+    QTRY_VERIFY_WITH_TIMEOUT(view_->lastFrameDivisor() == 1, 20000);
     view_->setReducedResolutionDivisor(1);
     view_->setRefineDelayMs(200);
   }
@@ -613,12 +615,14 @@ class Viewport3DTest : public QObject {
     view_->resetCamera();
     view_->setCutEnabled(false);
     view_->setReducedResolutionDivisor(3);
+    view_->setRefineDelayMs(60000);  // no refine before the reduced frame is checked, however slow the machine
     QTest::mousePress(view_.get(), Qt::LeftButton, Qt::NoModifier, QPoint(20, 20));
     QTest::mouseMove(view_.get(), QPoint(24, 20));
     QTest::mouseRelease(view_.get(), Qt::LeftButton, Qt::NoModifier, QPoint(24, 20));
     view_->grabFramebuffer();  // reduced
     QTRY_VERIFY(!view_->fullyRefined() && view_->lastFrameRenderedScene() && view_->lastFrameDivisor() == 3);
-    QTRY_VERIFY_WITH_TIMEOUT(view_->fullyRefined(), 10000);
+    view_->setRefineDelayMs(200);  // the default: the pending refine restarts with it
+    QTRY_VERIFY_WITH_TIMEOUT(view_->fullyRefined(), 20000);
     view_->setReducedResolutionDivisor(1);
   }
 
