@@ -32,7 +32,7 @@ Command addReconstructCommand(CLI::App& app) {
   reconstruct->add_option("--out", o->out, "The project file to write (.kerf)")->required();
   reconstruct->add_flag("--texture", o->texture,
                         "Also infer the pores, rays, fibres and colours from the photos (kerf-cli texture with "
-                        "its defaults). Off by default: it takes minutes (about 2-3 on two cores) where the "
+                        "its defaults). Off by default: it takes minutes (CN03: about 4 on two cores) where the "
                         "rings and the fit take seconds");
   addFitSampleOptions(reconstruct, o->fit);
   return {reconstruct, [o](Context& context) {
