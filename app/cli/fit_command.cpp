@@ -20,10 +20,11 @@ Command addFitCommand(CLI::App& app) {
     std::string out;
   };
   auto o = std::make_shared<Options>();
-  fit->add_option("SAMPLE", o->fit.sample,
-                  "A Mokume-style sample folder (A_col.png .. F_col.png photos, A_arl-unet.png .. ring images, "
-                  "numbered ring traces A_ann.png ..), or a project (.kerf) whose ring traces are fitted (ring "
-                  "images beside it are used too)")
+  fit->add_option(
+         "SAMPLE", o->fit.sample,
+         "A Mokume-style sample folder (A_col.png .. F_col.png photos, A_arl-unet.png .. ring images, "
+         "numbered ring traces A_ann.png ..), or a project (.kerf) whose ring traces are fitted (ring "
+         "images beside it are used too)")
       ->required();
   fit->add_option("--out", o->out, "The project file to write (.kerf)")->required();
   addFitSampleOptions(fit, o->fit);

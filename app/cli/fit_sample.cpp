@@ -18,7 +18,9 @@ namespace kerf::cli {
 namespace fs = std::filesystem;
 
 void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
-  command->add_option("--principal", o.principal, "Expected pith direction: the block axis x, y or z (default y)")
+  command
+      ->add_option("--principal", o.principal,
+                   "Expected pith direction: the block axis x, y or z (default y)")
       ->check(CLI::IsMember({"x", "y", "z"}));
   command->add_flag("--pith-only", o.pithOnly, "Step 1 only: no growth-rate (distortion) fit; uniform rates");
   command->add_flag("--ignore-anatomy", o.ignoreAnatomy,
@@ -31,11 +33,12 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
       ->add_option("--anatomy-weight", o.anatomyWeight,
                    "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
       ->check(CLI::Range(0.0, 100.0));
-  command->add_option("--species", o.species,
-                      "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri "
-                      "or nara (kerf-cli params --presets lists them). Default: a sample folder named by its "
-                      "Mokume code (CN03) gets that species; a project keeps its own wood; 'none' keeps the "
-                      "defaults");
+  command->add_option(
+      "--species", o.species,
+      "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri "
+      "or nara (kerf-cli params --presets lists them). Default: a sample folder named by its "
+      "Mokume code (CN03) gets that species; a project keeps its own wood; 'none' keeps the "
+      "defaults");
   addHoldOutFaceOption(command, o.holdOut);
 }
 
@@ -134,7 +137,8 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   }
   if (std::any_of(toDetect.begin(), toDetect.end(), [](const Image& photo) { return !photo.empty(); })) {
     std::fflush(stdout);  // the lines above before the progress on stderr
-    const BlockRingDetection detection = detectBlockRings(toDetect, project.block, heldOut, context.progress());
+    const BlockRingDetection detection =
+        detectBlockRings(toDetect, project.block, heldOut, context.progress());
     for (int i = 0; i < 6; ++i)
       if (detection.faces[i]) input.rings[i] = toGray8(detection.faces[i]->arl);
     fitted.facesDetected = detection.faceCount();
@@ -167,10 +171,11 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   }
   project.params = fit.params;
   project.knots = fit.knots;
-  project.rates = fit.rates ? *fit.rates
-                            : GrowthRates::uniform(project.block,
-                                                   PithAxis::fromAngles(fit.params.pithOrigin, fit.params.pithTilt,
-                                                                        fit.params.pithAzimuth));
+  project.rates = fit.rates
+                      ? *fit.rates
+                      : GrowthRates::uniform(project.block,
+                                             PithAxis::fromAngles(fit.params.pithOrigin, fit.params.pithTilt,
+                                                                  fit.params.pithAzimuth));
   return fitted;
 }
 

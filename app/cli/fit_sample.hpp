@@ -29,9 +29,9 @@ struct FitSampleOptions {
 void addFitSampleOptions(CLI::App* command, FitSampleOptions& options);
 
 struct FittedSample {
-  Project project;               // the fitted field in it, held-out faces recorded
-  std::array<Image, 6> photos;   // the photos the fit read (none of the held-out faces)
-  int facesDetected = 0;         // faces whose rings Kerf detected from the photo
+  Project project;              // the fitted field in it, held-out faces recorded
+  std::array<Image, 6> photos;  // the photos the fit read (none of the held-out faces)
+  int facesDetected = 0;        // faces whose rings Kerf detected from the photo
 };
 
 // Throws InputError (naming the sample) on bad input or too few rings, Cancelled on request.

@@ -24,9 +24,9 @@ int main(int argc, char** argv) {
   const std::vector<cli::Command> commands = {
       cli::addDemoCommand(app),         cli::addRenderFacesCommand(app), cli::addRenderCutCommand(app),
       cli::addExportVolumeCommand(app), cli::addParamsCommand(app),      cli::addDetectCommand(app),
-      cli::addFitCommand(app), cli::addReconstructCommand(app), cli::addAnnotationsCommand(app), cli::addRectifyCommand(app),
-      cli::addRenderBoardCommand(app),  cli::addRenderPanelCommand(app), cli::addTextureCommand(app),
-      cli::addExportCommand(app),
+      cli::addFitCommand(app),          cli::addReconstructCommand(app), cli::addAnnotationsCommand(app),
+      cli::addRectifyCommand(app),      cli::addRenderBoardCommand(app), cli::addRenderPanelCommand(app),
+      cli::addTextureCommand(app),      cli::addExportCommand(app),
   };
 
   try {

@@ -25,41 +25,45 @@ Command addReconstructCommand(CLI::App& app) {
   auto o = std::make_shared<Options>();
   reconstruct->fallthrough();  // kerf-cli's own --stats, -q may also follow the subcommand
   reconstruct
-      ->add_option("SAMPLE", o->fit.sample,
-                   "A Mokume-style sample folder (A_col.png .. F_col.png; ring images and traces are used when "
-                   "present) or a project (.kerf)")
+      ->add_option(
+          "SAMPLE", o->fit.sample,
+          "A Mokume-style sample folder (A_col.png .. F_col.png; ring images and traces are used when "
+          "present) or a project (.kerf)")
       ->required();
   reconstruct->add_option("--out", o->out, "The project file to write (.kerf)")->required();
-  reconstruct->add_flag("--texture", o->texture,
-                        "Also infer the pores, rays, fibres and colours from the photos (kerf-cli texture with "
-                        "its defaults). Off by default: it takes minutes (CN03: about 4 on two cores) where the "
-                        "rings and the fit take seconds");
+  reconstruct->add_flag(
+      "--texture", o->texture,
+      "Also infer the pores, rays, fibres and colours from the photos (kerf-cli texture with "
+      "its defaults). Off by default: it takes minutes (CN03: about 4 on two cores) where the "
+      "rings and the fit take seconds");
   addFitSampleOptions(reconstruct, o->fit);
-  return {reconstruct, [o](Context& context) {
-            std::printf("[1/2] rings and growth field of %s\n", o->fit.sample.c_str());
-            std::fflush(stdout);  // before the progress on stderr
-            const Stopwatch fitClock;
-            FittedSample fitted = fitSample(o->fit, context);
-            std::printf("[1/2] done in %.1f s (%s)\n", fitClock.seconds(),
-                        fitted.facesDetected > 0
-                            ? (std::to_string(fitted.facesDetected) + " faces' rings detected from the photos")
-                                  .c_str()
-                            : "the sample's own ring images and traces");
-            if (o->texture) {
-              std::printf("[2/2] texture detail from the photos (pores, rays, fibres, colours; minutes)\n");
-              std::fflush(stdout);
-              const Stopwatch textureClock;
-              const TextureInferenceOptions defaults;  // as kerf-cli texture without options
-              inferProjectTexture(fitted.project, fitted.photos, defaults, context);
-              std::printf("[2/2] done in %.1f s\n", textureClock.seconds());
-            } else {
-              std::printf("[2/2] texture detail skipped (it takes minutes): add --texture, or run kerf-cli "
-                          "texture %s --out %s later\n",
-                          o->out.c_str(), o->out.c_str());
-            }
-            saveProject(fitted.project, o->out);
-            std::printf("project written to %s\n", o->out.c_str());
-          }};
+  return {
+      reconstruct, [o](Context& context) {
+        std::printf("[1/2] rings and growth field of %s\n", o->fit.sample.c_str());
+        std::fflush(stdout);  // before the progress on stderr
+        const Stopwatch fitClock;
+        FittedSample fitted = fitSample(o->fit, context);
+        std::printf(
+            "[1/2] done in %.1f s (%s)\n", fitClock.seconds(),
+            fitted.facesDetected > 0
+                ? (std::to_string(fitted.facesDetected) + " faces' rings detected from the photos").c_str()
+                : "the sample's own ring images and traces");
+        if (o->texture) {
+          std::printf("[2/2] texture detail from the photos (pores, rays, fibres, colours; minutes)\n");
+          std::fflush(stdout);
+          const Stopwatch textureClock;
+          const TextureInferenceOptions defaults;  // as kerf-cli texture without options
+          inferProjectTexture(fitted.project, fitted.photos, defaults, context);
+          std::printf("[2/2] done in %.1f s\n", textureClock.seconds());
+        } else {
+          std::printf(
+              "[2/2] texture detail skipped (it takes minutes): add --texture, or run kerf-cli "
+              "texture %s --out %s later\n",
+              o->out.c_str(), o->out.c_str());
+        }
+        saveProject(fitted.project, o->out);
+        std::printf("project written to %s\n", o->out.c_str());
+      }};
 }
 
 }  // namespace kerf::cli

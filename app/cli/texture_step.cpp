@@ -8,7 +8,8 @@ TextureInferenceResult inferProjectTexture(Project& project, const std::array<Im
                                            TextureInferenceOptions options, Context& context) {
   options.heldOut = project.heldOutFaces;
   const GrowthRates rates = project.effectiveRates();
-  TextureInferenceResult result = inferTexture(project.block, project.params, rates, photos, options, context.progress());
+  TextureInferenceResult result =
+      inferTexture(project.block, project.params, rates, photos, options, context.progress());
   for (const std::string& line : formatTextureInferenceReport(result)) std::printf("%s\n", line.c_str());
   context.samples += static_cast<std::size_t>(result.evaluations) * result.crops * options.loss.cropSize *
                      options.loss.cropSize * options.loss.samples * options.loss.samples;

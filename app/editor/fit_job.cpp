@@ -29,7 +29,8 @@ RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& bloc
   RingDetection detection;
   for (int i = 0; i < 6; ++i) {
     if (!found.faces[i]) continue;
-    for (const FaceContour& contour : found.faces[i]->contours) detection.contours[i].push_back(contour.pixels);
+    for (const FaceContour& contour : found.faces[i]->contours)
+      detection.contours[i].push_back(contour.pixels);
     detection.arl[i] = toGray8(found.faces[i]->arl);
     detection.seconds[i] = found.faces[i]->seconds;
     ++detection.facesDetected;

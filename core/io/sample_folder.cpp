@@ -105,13 +105,12 @@ void validateSampleFolder(const std::array<fs::path, 6>& photos, const MokumeAnn
     const glm::vec2 mm = faceSizeMm(block, face);
     if (sameProportions(sizes[i], mm)) continue;
     if (cube) {
-      throw InputError(std::string("face ") + faceLetter(face) + " photo " + name(photos[i]) + " is " +
-                       sizeText(sizes[i]) + ", not square, but the block is a " +
-                       mmText(blockSize.x) + " mm cube" +
-                       (blockFromFile
-                            ? std::string()
-                            : " (a sample folder is Mokume's 40 mm cube unless it holds a block.json "
-                              "with {\"size_mm\": [x, y, z]})"));
+      throw InputError(
+          std::string("face ") + faceLetter(face) + " photo " + name(photos[i]) + " is " +
+          sizeText(sizes[i]) + ", not square, but the block is a " + mmText(blockSize.x) + " mm cube" +
+          (blockFromFile ? std::string()
+                         : " (a sample folder is Mokume's 40 mm cube unless it holds a block.json "
+                           "with {\"size_mm\": [x, y, z]})"));
     }
     throw InputError(name(photos[i]) + " is " + sizeText(sizes[i]) + " but face " + faceLetter(face) +
                      " of the " + mmText(blockSize.x) + " x " + mmText(blockSize.y) + " x " +

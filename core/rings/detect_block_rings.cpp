@@ -13,7 +13,8 @@ bool DetectedFaceRings::squarePixels() const {
 }
 
 int BlockRingDetection::faceCount() const {
-  return static_cast<int>(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.has_value(); }));
+  return static_cast<int>(
+      std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.has_value(); }));
 }
 
 int BlockRingDetection::contourCount() const {
@@ -27,7 +28,8 @@ std::string BlockRingDetection::countsText() const {
   std::string text;
   for (FaceId face : kAllFaces)
     if (const auto& f = faces[faceIndex(face)])
-      text += std::string(text.empty() ? "" : " ") + faceLetter(face) + ":" + std::to_string(f->contours.size());
+      text +=
+          std::string(text.empty() ? "" : " ") + faceLetter(face) + ":" + std::to_string(f->contours.size());
   return text;
 }
 
@@ -40,7 +42,8 @@ BlockRingDetection detectBlockRings(const std::array<Image, 6>& photos, const Bl
   if (faces.empty())
     throw InputError(heldOut.empty() ? "there are no face photos to detect rings on"
                                      : "there are no face photos to detect rings on besides the held-out "
-                                       "faces " + heldOut.letters());
+                                       "faces " +
+                                           heldOut.letters());
   BlockRingDetection detection;
   const double share = 1.0 / static_cast<double>(faces.size());
   for (std::size_t k = 0; k < faces.size(); ++k) {

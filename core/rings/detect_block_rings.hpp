@@ -19,10 +19,10 @@
 namespace kerf {
 
 struct DetectedFaceRings {
-  Image arl;                           // the ring-localization image, 1 channel in [0, 1], the photo's size
-  std::vector<FaceContour> contours;   // extracted from arl (pixel indices)
-  glm::vec2 pxPerMm{0.0f};             // photo pixels per face mm along its width and height
-  double seconds = 0;                  // detection time of this face
+  Image arl;                          // the ring-localization image, 1 channel in [0, 1], the photo's size
+  std::vector<FaceContour> contours;  // extracted from arl (pixel indices)
+  glm::vec2 pxPerMm{0.0f};            // photo pixels per face mm along its width and height
+  double seconds = 0;                 // detection time of this face
   float meanPxPerMm() const { return 0.5f * (pxPerMm.x + pxPerMm.y); }
   // Whether the photo's pixels are square on the wood (within 3 %); the detector assumes it.
   bool squarePixels() const;

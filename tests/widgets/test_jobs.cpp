@@ -13,11 +13,11 @@
 #include <memory>
 #include <thread>
 
+#include "../timing_checks.hpp"
 #include "job_runner.hpp"
 #include "job_status_widget.hpp"
 #include "log_panel.hpp"
 #include "util/error.hpp"
-#include "../timing_checks.hpp"
 
 using namespace kerf;
 using namespace std::chrono_literals;
@@ -111,7 +111,8 @@ void TestJobs::startNeverBlocks() {
       "Waiting",
       [released](const Progress&, const JobRunner::Preview&) {
         const auto until = std::chrono::steady_clock::now() + 20s;
-        while (!released->load() && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(1ms);
+        while (!released->load() && std::chrono::steady_clock::now() < until)
+          std::this_thread::sleep_for(1ms);
         return QVariant(released->load() ? QStringLiteral("released") : QStringLiteral("ran out"));
       },
       [&](QVariant value) {

@@ -23,10 +23,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "params/builtin_presets.hpp"
+#include "../timing_checks.hpp"
 #include "cut_plane_controls.hpp"
 #include "parameter_panel.hpp"
-#include "../timing_checks.hpp"
+#include "params/builtin_presets.hpp"
 
 using namespace kerf;
 

@@ -615,7 +615,8 @@ class Viewport3DTest : public QObject {
     view_->resetCamera();
     view_->setCutEnabled(false);
     view_->setReducedResolutionDivisor(3);
-    view_->setRefineDelayMs(60000);  // no refine before the reduced frame is checked, however slow the machine
+    view_->setRefineDelayMs(
+        60000);  // no refine before the reduced frame is checked, however slow the machine
     QTest::mousePress(view_.get(), Qt::LeftButton, Qt::NoModifier, QPoint(20, 20));
     QTest::mouseMove(view_.get(), QPoint(24, 20));
     QTest::mouseRelease(view_.get(), Qt::LeftButton, Qt::NoModifier, QPoint(24, 20));
