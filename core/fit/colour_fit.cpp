@@ -1,6 +1,10 @@
 #include "fit/colour_fit.hpp"
 
 #include <ceres/ceres.h>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,12 +21,15 @@ namespace kerf {
 
 namespace {
 
+constexpr int kProfileSize = 9;  // the ring profile's eight knots and rings.season_shading
+
 // What a sample point's colour depends on besides the fitted parameters (fixed during the fit). One
 // photo point and the model at that same point: averaging the photo over cells (as an earlier version
 // did) mixes earlywood and latewood and pulls the fit to one mean colour (issue 16).
 struct Sample {
   int face = 0;
-  double pigment = 0;       // Beer's-law concentration t without the ring profile
+  double pigment = 0;       // Beer's-law concentration t without the ring profile and the season
+  double season = 0;        // the season s (0 earlywood, 1 latewood), weighed by rings.season_shading
   double year = 0, ray = 0;
   double phase = 0;         // where in its year the point lies (0 at a ring boundary)
   int profileKnot = 0;      // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
@@ -45,7 +52,8 @@ struct ColourModel {
     if (x < T(0)) x = T(0);
     if (x > T(1)) x = T(1);
     const T blend = x * x * (T(3) - T(2) * x);
-    T t = T(s->pigment);
+    // profile[0..7]: the ring profile's knots; profile[8]: rings.season_shading.
+    T t = T(s->pigment) + profile[8] * s->season;
     for (int i = 0; i < 4; ++i) t += s->profileWeight[i] * profile[(s->profileKnot + 7 + i) % 8];
     const double w = rayOpacity * s->ray;
     for (int c = 0; c < 3; ++c) {
@@ -68,7 +76,7 @@ struct ColourModel {
 struct BinResidual {
   std::vector<const Sample*> members;
   glm::dvec3 rayColor;
-  double rayOpacity = 0, weight = 0;
+  double rayOpacity = 0, weight = 0, spreadWeight = 1;
   double target[3] = {0, 0, 0};
   double targetSpread = 0;  // standard deviation of the photo's luminance over the bin
 
@@ -87,7 +95,59 @@ struct BinResidual {
     for (int c = 0; c < 3; ++c) residual[c] = weight * (sum[c] / n - target[c]);
     using std::sqrt;
     const T variance = sumLuminance2 / n - (sumLuminance / n) * (sumLuminance / n);
-    residual[3] = weight * (sqrt(variance + 1e-8) - targetSpread);
+    residual[3] = weight * spreadWeight * (sqrt(variance + 1e-8) - targetSpread);
+    return true;
+  }
+};
+
+// Beer's law: latewood, pores and every darker part of the wood hold more of one pigment, so the log
+// ratio log(L/E) per channel points along that pigment's absorption, which is the species'. The per-bin
+// statistics alone leave the channels free: fits that darkened green most turned the pores purple, and
+// one that darkened only green and blue made a held-out face red and green. This penalises the part of
+// log(L/E) off the pigment direction the photos show (pigmentDirectionOf).
+struct PigmentHuePrior {
+  double weight;
+  glm::dvec3 direction;  // unit
+  template <class T>
+  bool operator()(const T* early, const T* late, T* residual) const {
+    using std::log;
+    T ratio[3];
+    for (int c = 0; c < 3; ++c) ratio[c] = log(late[c] / early[c]);
+    const T along = ratio[0] * direction.x + ratio[1] * direction.y + ratio[2] * direction.z;
+    for (int c = 0; c < 3; ++c) residual[c] = weight * (ratio[c] - along * direction[c]);
+    return true;
+  }
+};
+
+// The pigment's direction in log colour, as the photos show it: the main axis of the points' log colours
+// (light and dark wood differ mostly by how much pigment they hold), pointing from light to dark.
+glm::dvec3 pigmentDirectionOf(const std::vector<Sample>& samples) {
+  glm::dvec3 mean(0.0);
+  for (const Sample& s : samples)
+    mean += glm::log(glm::max(glm::dvec3(s.target[0], s.target[1], s.target[2]), glm::dvec3(1e-3)));
+  mean /= double(samples.size());
+  glm::dmat3 covariance(0.0);
+  for (const Sample& s : samples) {
+    const glm::dvec3 d =
+        glm::log(glm::max(glm::dvec3(s.target[0], s.target[1], s.target[2]), glm::dvec3(1e-3))) - mean;
+    covariance += glm::outerProduct(d, d);
+  }
+  glm::dvec3 axis = glm::normalize(glm::dvec3(-1.0));
+  for (int i = 0; i < 50; ++i) {  // power iteration: the covariance's largest eigenvector
+    const glm::dvec3 next = covariance * axis;
+    if (glm::length(next) < 1e-12) break;
+    axis = glm::normalize(next);
+  }
+  return axis.x + axis.y + axis.z > 0 ? -axis : axis;
+}
+
+// Heartwood and sapwood colours stay together unless the photos show both: a block all in its sapwood
+// (CN03) says nothing of its heartwood, which a held-out face or a cut may still reach.
+struct HeartSapPrior {
+  double weight;
+  template <class T>
+  bool operator()(const T* heart, const T* sap, T* residual) const {
+    for (int c = 0; c < 3; ++c) residual[c] = weight * (heart[c] - sap[c]);
     return true;
   }
 };
@@ -97,7 +157,7 @@ struct BinResidual {
 struct ProfilePrior {
   double smooth, small;
   template <class T>
-  bool operator()(const T* profile, T* residual) const {
+  bool operator()(const T* profile, T* residual) const {  // profile[8], the season's weight, is free
     for (int k = 0; k < 8; ++k) {
       residual[k] = smooth * (profile[(k + 7) % 8] - 2.0 * profile[k] + profile[(k + 1) % 8]);
       residual[8 + k] = small * profile[k];
@@ -162,6 +222,7 @@ bool ringProfileStart(const std::vector<Sample>& samples, double* early, double*
   for (int c = 0; c < 3; ++c) early[c] = colour[lightest][c], late[c] = colour[darkest][c];
   for (int k = 0; k < 8; ++k)
     profile[k] = std::log(luminance(colour[k]) / light) / std::log(dark / light) - pigment[k];
+  profile[8] = 0;  // the shading starts as the profile's alone; the fit adds the season's where it helps
   return true;
 }
 
@@ -207,7 +268,8 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
             glm::vec4 weights;
             s.profileKnot = material.ringProfileCell(w.year, weights);
             for (int i = 0; i < 4; ++i) s.profileWeight[i] = weights[i];
-            s.pigment = w.pigment - material.ringProfile(w.year);
+            s.pigment = w.pigment - material.ringProfile(w.year) - params.seasonShading * w.latewood;
+            s.season = w.latewood;
             s.year = w.year, s.ray = w.ray, s.phase = material.yearPhase(w.year);
           }
         },
@@ -228,8 +290,9 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
                                            &WoodParameters::ringProfile2, &WoodParameters::ringProfile3,
                                            &WoodParameters::ringProfile4, &WoodParameters::ringProfile5,
                                            &WoodParameters::ringProfile6, &WoodParameters::ringProfile7};
-  double profile[8];
+  double profile[kProfileSize];
   for (int k = 0; k < 8; ++k) profile[k] = params.*knots[k];
+  profile[8] = params.seasonShading;
 
   const glm::dvec3 rayColor = toD(params.rayColor);
   const auto l1PerFace = [&](std::array<double, 6>& out) {
@@ -265,20 +328,33 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     const double n = static_cast<double>(bin.members.size());
     for (double& t : bin.target) t /= n;
     bin.targetSpread = std::sqrt(std::max(0.0, bin.targetSpread / n - luminance(bin.target) * luminance(bin.target)));
-    bin.rayColor = rayColor, bin.rayOpacity = params.rayOpacity;
+    bin.rayColor = rayColor, bin.rayOpacity = params.rayOpacity, bin.spreadWeight = options.spreadWeight;
     bin.weight = std::sqrt(n / static_cast<double>(samples.size()));
     const int face = std::get<0>(key);
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BinResidual, 4, 3, 3, 3, 3, 2, 3, 8>(
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BinResidual, 4, 3, 3, 3, 3, 2, 3, kProfileSize>(
                                  new BinResidual(std::move(bin))),
                              nullptr, early, late, sapEarly, sapLate, sap, tint[face], profile);
   }
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ProfilePrior, 16, 8>(
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ProfilePrior, 16, kProfileSize>(
                                new ProfilePrior{options.profileSmoothness, options.profileSmallness}),
                            nullptr, profile);
   for (int k = 0; k < 8; ++k) {
     problem.SetParameterLowerBound(profile, k, -10.0);
     problem.SetParameterUpperBound(profile, k, 10.0);
   }
+  problem.SetParameterLowerBound(profile, 8, 0.0);
+  problem.SetParameterUpperBound(profile, 8, 3.0);
+  for (const auto& [heart, sapColour] : {std::pair{early, sapEarly}, std::pair{late, sapLate}})
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<HeartSapPrior, 3, 3, 3>(
+                                 new HeartSapPrior{options.heartSapWeight}),
+                             nullptr, heart, sapColour);
+  const glm::dvec3 direction = pigmentDirectionOf(samples);
+  const std::pair<double*, double*> pairs[2] = {{early, late}, {sapEarly, sapLate}};
+  const glm::dvec3 directions[2] = {direction, direction};
+  for (int i = 0; i < 2; ++i)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PigmentHuePrior, 3, 3, 3>(
+                                 new PigmentHuePrior{options.pigmentHueWeight, directions[i]}),
+                             nullptr, pairs[i].first, pairs[i].second);
   if (!options.fitRingProfile) problem.SetParameterBlockConstant(profile);
   for (int f = 0; f < 6; ++f) {
     if (photos[f].empty()) continue;
@@ -319,6 +395,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   out.sapwoodStart = static_cast<float>(sap[0]), out.sapwoodTransition = static_cast<float>(sap[1]);
   for (int f = 0; f < 6; ++f) out.*tints[f] = store(tint[f]);
   for (int k = 0; k < 8; ++k) out.*knots[k] = static_cast<float>(profile[k]);
+  out.seasonShading = static_cast<float>(profile[8]);
   validate(out);
   result.params = out;
   result.samples = static_cast<int>(samples.size());

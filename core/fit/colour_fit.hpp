@@ -6,7 +6,8 @@
 // Kerf's colour model has the parameters of the one schema (not the authors' free 128-entry colour bar):
 // heartwood and sapwood earlywood/latewood colours, the heart-to-sapwood radius and blend, a colour
 // multiplier per face (faces.tint_*), and the ring profile (rings.profile_*: extra pigment at eight points
-// of the year, the base colour as a function of the growth value of Mokume Sec. 5.3.2). Everything else
+// of the year, the base colour as a function of the growth value of Mokume Sec. 5.3.2) with the weight of
+// the latewood season in it (rings.season_shading). Everything else
 // the colour depends on - the pigment concentration t of Beer's law (season, ring-to-ring variation,
 // mottling, fibres, pores), the growth time and the rays - does not depend on these parameters, so it is
 // evaluated once per sample point, and the fit itself (Ceres, automatic differentiation) only re-mixes
@@ -37,11 +38,15 @@ struct ColourFitOptions {
   bool fitSapwood = true;     // the heart-to-sapwood radius and blend (needs both on the faces)
   bool fitRingProfile = true;  // rings.profile_*: the shading within a year (Mokume 5.3.2 base colour)
   double profileSmoothness = 0.02, profileSmallness = 0.005;  // priors on the ring profile's knots
+  // Weight of the luminance spread within a bin (the contrast of the detail) beside its mean colour.
+  double spreadWeight = 1.0;
+  double pigmentHueWeight = 0.3;  // keeps latewood's pigment the hue of the photos' light-to-dark axis
+  double heartSapWeight = 0.02;  // heartwood colours follow the sapwood's where the photos show one only  // keeps blue darkening at least as much as green, green as red
 };
 
 struct ColourFitResult {
   WoodParameters params;  // the input with color.* (earlywood, latewood, sapwood pair, sapwood start and
-                          // blend), rings.profile_* and faces.tint_* replaced
+                          // blend), rings.profile_*, rings.season_shading and faces.tint_* replaced
   std::array<double, 6> l1Before{}, l1After{};  // mean |model - photo| per face (colour units, 0..1);
                                                 // 0 where a face has no photo
   int samples = 0;

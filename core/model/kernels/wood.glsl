@@ -213,7 +213,7 @@ WoodSample evaluateWood(vec3 p, int faceIndex, bool wantFiber) {
   s.ray = rayWeight(c);
 
   // Pigment concentration t (Beer's law, Liu Sec. 4.3-4.4).
-  float t = s.latewood + ringProfileAt(s.year);
+  float t = P.seasonShading * s.latewood + ringProfileAt(s.year);
   t += 0.5f * P.ringColorVariation * valueNoise1(s.year, u_hashSeed + kRingColor);
   if (P.mottleStrength > 0.0f) {
     float m = P.mottleScale;
