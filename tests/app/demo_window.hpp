@@ -11,6 +11,11 @@
 
 namespace kerf::testing {
 
+// Where an editor test saves a picture: KERF_TEST_ARTIFACTS_DIR/<name>.png.
+inline QString artifact(const QString& name) {
+  return QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/") + name + ".png";
+}
+
 inline std::unique_ptr<MainWindow> openDemoWindow(const QString& folder, int facePixels, QSize size = {},
                                                   int timeoutMs = 120000) {
   DemoOptions options;

@@ -17,6 +17,7 @@
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "gl/surface_format.hpp"
+#include "demo_window.hpp"
 #include "main_window.hpp"
 #include "window_grab.hpp"
 
@@ -25,9 +26,7 @@ using namespace kerf;
 namespace {
 constexpr int kTimeoutMs = 60000;
 
-QString artifact(const QString& name) {
-  return QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/") + name + ".png";
-}
+using testing::artifact;
 }  // namespace
 
 class TestAnnotationTools : public QObject {

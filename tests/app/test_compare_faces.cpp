@@ -16,9 +16,7 @@ using namespace kerf;
 namespace {
 constexpr int kTimeoutMs = 60000;
 
-QString artifact(const QString& name) {
-  return QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/") + name + ".png";
-}
+using testing::artifact;
 }  // namespace
 
 class TestCompareFaces : public QObject {

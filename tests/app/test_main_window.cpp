@@ -24,6 +24,7 @@
 #include "image_change.hpp"
 #include "job_runner.hpp"
 #include "log_panel.hpp"
+#include "demo_window.hpp"
 #include "main_window.hpp"
 #include "parameter_panel.hpp"
 #include "qt_image.hpp"
@@ -40,9 +41,7 @@ QPoint toPoint(glm::vec3 px) {
   return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
 }
 
-QString artifact(const QString& name) {
-  return QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/") + name + ".png";
-}
+using testing::artifact;
 }  // namespace
 
 class TestMainWindow : public QObject {
