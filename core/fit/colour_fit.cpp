@@ -1,8 +1,10 @@
 #include "fit/colour_fit.hpp"
+#include "model/wood_kernels.hpp"
 
 #include <ceres/ceres.h>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 #include <algorithm>
@@ -21,7 +23,9 @@ namespace kerf {
 
 namespace {
 
-constexpr int kProfileSize = 9;  // the ring profile's eight knots and rings.season_shading
+// The ring profile's eight knots, rings.season_shading and pores.darkness: the shading of the year and of
+// its pores, fitted together because the photos' per-bin spread holds both.
+constexpr int kProfileSize = 10;
 
 // What a sample point's colour depends on besides the fitted parameters (fixed during the fit). One
 // photo point and the model at that same point: averaging the photo over cells (as an earlier version
@@ -31,6 +35,10 @@ struct Sample {
   double pigment = 0;       // Beer's-law concentration t without the ring profile and the season
   double season = 0;        // the season s (0 earlywood, 1 latewood), weighed by rings.season_shading
   double year = 0, ray = 0;
+  // The pore weights over the photo pixel's footprint (3 x 3 points): a photo pixel averages a pore
+  // smaller than itself, a single model point does not, and that made the fit pale the pores (issue 16).
+  // Their shadow's darkness is fitted (profile[9]).
+  float pore[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
   double phase = 0;         // where in its year the point lies (0 at a ring boundary)
   int profileKnot = 0;      // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
   double profileWeight[4] = {0, 0, 0, 0};
@@ -42,6 +50,7 @@ struct ColourModel {
   const Sample* s;
   glm::dvec3 rayColor;
   double rayOpacity;
+  glm::dvec3 poreHue;  // pores.shadow_hue over its mean (kernels/wood.glsl poreShadeOf)
 
   template <class T>
   void operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
@@ -52,14 +61,19 @@ struct ColourModel {
     if (x < T(0)) x = T(0);
     if (x > T(1)) x = T(1);
     const T blend = x * x * (T(3) - T(2) * x);
-    // profile[0..7]: the ring profile's knots; profile[8]: rings.season_shading.
+    // profile[0..7]: the ring profile's knots; profile[8]: rings.season_shading; profile[9]: pores.darkness.
     T t = T(s->pigment) + profile[8] * s->season;
     for (int i = 0; i < 4; ++i) t += s->profileWeight[i] * profile[(s->profileKnot + 7 + i) % 8];
     const double w = rayOpacity * s->ray;
     for (int c = 0; c < 3; ++c) {
+      T poreShade(0);  // kernels/wood.glsl's poreShadeOf, averaged over the pixel
+      for (float pore : s->pore)
+        poreShade += pore > 0.0f ? exp(-double(glsl::WoodKernels::kPoreShadow) * pore * poreHue[c] * profile[9])
+                                 : T(1);
+      poreShade /= 9.0;
       const T e = early[c] + blend * (sapEarly[c] - early[c]);
       const T l = late[c] + blend * (sapLate[c] - late[c]);
-      const T beer = e * exp(t * log(l / e));
+      const T beer = e * exp(t * log(l / e)) * poreShade;
       out[c] = tint[c] * ((1.0 - w) * beer + w * rayColor[c]);
     }
   }
@@ -75,7 +89,7 @@ struct ColourModel {
 // by Beer's law it grows with the earlywood-latewood colour ratio, which the means alone leave free.
 struct BinResidual {
   std::vector<const Sample*> members;
-  glm::dvec3 rayColor;
+  glm::dvec3 rayColor, poreHue;
   double rayOpacity = 0, weight = 0, spreadWeight = 1;
   double target[3] = {0, 0, 0};
   double targetSpread = 0;  // standard deviation of the photo's luminance over the bin
@@ -86,7 +100,7 @@ struct BinResidual {
     T sum[3] = {T(0), T(0), T(0)}, sumLuminance(0), sumLuminance2(0);
     for (const Sample* s : members) {
       T colour[3];
-      ColourModel{s, rayColor, rayOpacity}(early, late, sapEarly, sapLate, sap, tint, profile, colour);
+      ColourModel{s, rayColor, rayOpacity, poreHue}(early, late, sapEarly, sapLate, sap, tint, profile, colour);
       for (int c = 0; c < 3; ++c) sum[c] += colour[c];
       const T y = 0.299 * colour[0] + 0.587 * colour[1] + 0.114 * colour[2];
       sumLuminance += y, sumLuminance2 += y * y;
@@ -157,7 +171,7 @@ struct HeartSapPrior {
 struct ProfilePrior {
   double smooth, small;
   template <class T>
-  bool operator()(const T* profile, T* residual) const {  // profile[8], the season's weight, is free
+  bool operator()(const T* profile, T* residual) const {  // profile[8] and [9] (season, pores) are free
     for (int k = 0; k < 8; ++k) {
       residual[k] = smooth * (profile[(k + 7) % 8] - 2.0 * profile[k] + profile[(k + 1) % 8]);
       residual[8 + k] = small * profile[k];
@@ -271,6 +285,10 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
             s.pigment = w.pigment - material.ringProfile(w.year) - params.seasonShading * w.latewood;
             s.season = w.latewood;
             s.year = w.year, s.ray = w.ray, s.phase = material.yearPhase(w.year);
+            for (int i = 0; i < 9; ++i) {
+              const glm::vec2 sub(x0 + (i % 3 + 0.5f) * window / 3.0f, y0 + (i / 3 + 0.5f) * window / 3.0f);
+              s.pore[i] = model.evaluate(block.imageToBlock(face, sub, {photo.width, photo.height})).pore;
+            }
           }
         },
         progress);
@@ -293,14 +311,21 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   double profile[kProfileSize];
   for (int k = 0; k < 8; ++k) profile[k] = params.*knots[k];
   profile[8] = params.seasonShading;
+  profile[9] = params.poreDarkness;
 
   const glm::dvec3 rayColor = toD(params.rayColor);
+  // The pores' shadow takes the hue of the photos' light-to-dark axis, as their latewood pigment does.
+  const glm::dvec3 direction = pigmentDirectionOf(samples);
+  glm::dvec3 shadowHue = toD(params.poreShadowHue);
+  if (glm::all(glm::lessThan(direction, glm::dvec3(0.0))))
+    shadowHue = glm::max(-direction / std::max({-direction.x, -direction.y, -direction.z}), glm::dvec3(0.05));
+  const glm::dvec3 poreHue = glm::max(shadowHue, glm::dvec3(1e-3)) / ((shadowHue.x + shadowHue.y + shadowHue.z) / 3.0);
   const auto l1PerFace = [&](std::array<double, 6>& out) {
     std::array<double, 6> count{};
     out.fill(0.0);
     for (const Sample& s : samples) {
       double colour[3];
-      ColourModel{&s, rayColor, params.rayOpacity}(early, late, sapEarly, sapLate, sap, tint[s.face], profile,
+      ColourModel{&s, rayColor, params.rayOpacity, poreHue}(early, late, sapEarly, sapLate, sap, tint[s.face], profile,
                                                    colour);
       for (int c = 0; c < 3; ++c)
         out[s.face] += std::abs(std::clamp(colour[c], 0.0, 1.0) - s.target[c]) / 3.0;
@@ -328,7 +353,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     const double n = static_cast<double>(bin.members.size());
     for (double& t : bin.target) t /= n;
     bin.targetSpread = std::sqrt(std::max(0.0, bin.targetSpread / n - luminance(bin.target) * luminance(bin.target)));
-    bin.rayColor = rayColor, bin.rayOpacity = params.rayOpacity, bin.spreadWeight = options.spreadWeight;
+    bin.rayColor = rayColor, bin.poreHue = poreHue, bin.rayOpacity = params.rayOpacity, bin.spreadWeight = options.spreadWeight;
     bin.weight = std::sqrt(n / static_cast<double>(samples.size()));
     const int face = std::get<0>(key);
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BinResidual, 4, 3, 3, 3, 3, 2, 3, kProfileSize>(
@@ -344,11 +369,12 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   }
   problem.SetParameterLowerBound(profile, 8, 0.0);
   problem.SetParameterUpperBound(profile, 8, 3.0);
+  problem.SetParameterLowerBound(profile, 9, 0.0);  // pores.darkness's schema range
+  problem.SetParameterUpperBound(profile, 9, 20.0);
   for (const auto& [heart, sapColour] : {std::pair{early, sapEarly}, std::pair{late, sapLate}})
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<HeartSapPrior, 3, 3, 3>(
                                  new HeartSapPrior{options.heartSapWeight}),
                              nullptr, heart, sapColour);
-  const glm::dvec3 direction = pigmentDirectionOf(samples);
   const std::pair<double*, double*> pairs[2] = {{early, late}, {sapEarly, sapLate}};
   const glm::dvec3 directions[2] = {direction, direction};
   for (int i = 0; i < 2; ++i)
@@ -396,6 +422,8 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   for (int f = 0; f < 6; ++f) out.*tints[f] = store(tint[f]);
   for (int k = 0; k < 8; ++k) out.*knots[k] = static_cast<float>(profile[k]);
   out.seasonShading = static_cast<float>(profile[8]);
+  out.poreDarkness = static_cast<float>(profile[9]);
+  out.poreShadowHue = glm::vec3(shadowHue);
   validate(out);
   result.params = out;
   result.samples = static_cast<int>(samples.size());

@@ -7,12 +7,14 @@
 // heartwood and sapwood earlywood/latewood colours, the heart-to-sapwood radius and blend, a colour
 // multiplier per face (faces.tint_*), and the ring profile (rings.profile_*: extra pigment at eight points
 // of the year, the base colour as a function of the growth value of Mokume Sec. 5.3.2) with the weight of
-// the latewood season in it (rings.season_shading). Everything else
-// the colour depends on - the pigment concentration t of Beer's law (season, ring-to-ring variation,
-// mottling, fibres, pores), the growth time and the rays - does not depend on these parameters, so it is
-// evaluated once per sample point, and the fit itself (Ceres, automatic differentiation) only re-mixes
-// colours: colour = tint_face * mix(E (L/E)^(t + profile(year)), ray colour, ray opacity * ray), E and L
-// blended from heartwood to sapwood by the growth time.
+// the latewood season in it (rings.season_shading), and the darkness of the pores' shadow
+// (pores.darkness: the bins' spread holds it, and a pore band darker than the photo's made the fit lighten
+// the wood around it). Everything else the colour depends on - the pigment concentration t of Beer's law
+// (season, ring-to-ring variation, mottling, fibres), the pore and ray weights and the growth time - does
+// not depend on these parameters, so it is evaluated once per sample point, and the fit itself (Ceres,
+// automatic differentiation) only re-mixes colours: colour = tint_face * mix(E (L/E)^(t + profile(year))
+// * exp(-k darkness pore), ray colour, ray opacity * ray), E and L blended from heartwood to sapwood by
+// the growth time.
 // The fit compares per year-phase statistics (issue 16): the mean colour over bins of points (a face, a
 // sixteenth of the year, a five-year band), model against photo, starting from the photos' shade at
 // each point of the year. A point-by-point loss rewards lowering the contrast wherever the model's

@@ -28,11 +28,18 @@ KERF_CONST uint kPoreCell = 7u;
 KERF_CONST uint kRayColumn = 8u;
 KERF_CONST uint kRayCell = 9u;
 
+// Pores are open vessels: a hole's shadow darkens the wood by a fixed factor per unit of pores.darkness,
+// whatever the wood's pigment. (As extra pigment t they vanished wherever the fitted latewood colour came
+// close to the earlywood's, as on CN03 - issue 16. Following the pigment's hue instead let the colour fit
+// turn CN03's pores olive.) 0.5 keeps the default species' pores about as dark as before.
+KERF_CONST float kPoreShadow = 0.5f;
+
 struct WoodSample {
   float year;           // growth field value G (years since the pith) at the distorted point
   float latewood;       // season blend s in [0, 1]: 0 earlywood, 1 latewood
   float pigment;        // Beer's-law concentration t: colour = early * (late / early)^t
   float pore;           // pore weight in [0, 1] (Wyvill kernel)
+  vec3 poreShade;       // the pore's shadow: the factor on the colour (poreShadeOf)
   float ray;            // ray weight in [0, 1]
   vec3 color;           // RGB in [0, 1], as stored in 8-bit images (sRGB-encoded)
   vec3 fiberDirection;  // unit, block frame (the pith direction unless asked for)
@@ -45,6 +52,19 @@ float stepSmooth(float a, float b, float x) {
 }
 
 // Wyvill kernel (Liu Sec. 4.6) of a squared distance already divided by the squared influence radius.
+// A vessel seen in a cut is a hole: dark across most of its radius with a soft rim. (The Wyvill blob's dark
+// core was half the radius, so CN03's pores read as faint specks - issue 16.)
+float holeProfile(float d2) {
+  return 1.0f - stepSmooth(0.45f, 1.0f, d2);
+}
+
+// The colour factor of a pore's shadow: exp(-kPoreShadow * darkness * pore) in luminance, absorbed per
+// channel as pores.shadow_hue says (its mean normalised away, so pores.darkness alone sets how dark).
+vec3 poreShadeOf(float pore) {
+  vec3 hue = max(P.poreShadowHue, vec3(1e-3f));
+  return exp(-(kPoreShadow * P.poreDarkness * pore / ((hue.x + hue.y + hue.z) / 3.0f)) * hue);
+}
+
 float wyvill(float d2) {
   float w = 1.0f - d2;
   return w > 0.0f ? w * w * w : 0.0f;
@@ -159,7 +179,7 @@ float poreWeight(Cylindrical c, float season) {
         float r = min(radius * (0.7f + 0.6f * unitOf(mixHash(segment ^ 0x9e3779b9u))), cell);
         float halfLength = 0.5f * len * (0.6f + 0.35f * unitOf(mixHash(segment ^ 0xc2b2ae35u)));
         float dh = (c.height - ((float(k) + 0.5f) * len - stagger)) / halfLength;
-        weight = max(weight, wyvill(d2 / (r * r) + dh * dh));
+        weight = max(weight, holeProfile(d2 / (r * r) + dh * dh));
       }
     }
   }
@@ -223,13 +243,13 @@ WoodSample evaluateWood(vec3 p, int faceIndex, bool wantFiber) {
     vec3 q = vec3(c.x / P.fiberWidth, c.y / P.fiberWidth, c.height / P.fiberLength);
     t += 0.5f * P.fiberStrength * valueNoise3(q, u_hashSeed + kFiber).x;
   }
-  t += P.poreDarkness * s.pore;
   s.pigment = t;
+  s.poreShade = poreShadeOf(s.pore);
 
   float sap = stepSmooth(P.sapwoodStart - 0.5f * P.sapwoodTransition, P.sapwoodStart + 0.5f * P.sapwoodTransition, s.year);
   vec3 early = max(mix(P.earlywoodColor, P.sapwoodEarlywoodColor, sap), vec3(1e-3f));
   vec3 late = max(mix(P.latewoodColor, P.sapwoodLatewoodColor, sap), vec3(1e-3f));
-  vec3 color = early * pow(late / early, vec3(t));
+  vec3 color = early * pow(late / early, vec3(t)) * s.poreShade;
   color = mix(color, P.rayColor, P.rayOpacity * s.ray);
   color -= knotDarkness * P.knotDarkening;  // Larsson et al. 2022 Sec. 4.3
   if (faceIndex == 0) color *= P.faceTintA;
