@@ -19,6 +19,7 @@ class QActionGroup;
 class QMenu;
 class QLabel;
 class QSlider;
+class QSplitter;
 class QToolBar;
 class QUndoView;
 
@@ -47,6 +48,7 @@ class ParameterPanel;
 class PartExportDialog;
 class RecentFiles;
 class Viewport3D;
+class WindowLayout;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -88,6 +90,7 @@ class MainWindow : public QMainWindow {
   LogPanel* log() const { return log_; }
   Autosave* autosave() const { return autosave_; }
   QAction* toggleViewAction() const { return toggleViewAction_; }
+  WindowLayout* windowLayout() const { return layout_; }
   // Photos, Model, Blend, Split, Difference (FaceDisplay order; Ctrl+1 .. Ctrl+5), and the slider of Blend
   // (opacity) and Split (where the line lies).
   QList<QAction*> faceDisplayActions() const;
@@ -212,8 +215,6 @@ class MainWindow : public QMainWindow {
   void applyDetectedTraces(const RingDetection& detection);
   void ringJobEnded(int id, const QString& message);
   void connectDocument();
-  void restoreLayout();
-  void useDefaultLayout();
 
   void chooseDocument();
   void startLoad(const QString& what, std::function<LoadedDocument(const Progress&)> load);
@@ -260,6 +261,8 @@ class MainWindow : public QMainWindow {
   TextureInferenceOptions textureOptions_;
   std::shared_ptr<const RingDetection> ringDetection_;
 
+  WindowLayout* layout_ = nullptr;
+  QSplitter* centralSplitter_ = nullptr;  // the faces | 3D block
   FacesView* facesView_ = nullptr;
   Viewport3D* viewport_ = nullptr;
   CutView* cutView_ = nullptr;
