@@ -12,6 +12,7 @@
 #include <QScrollArea>
 #include <QSlider>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -36,6 +37,7 @@
 #include "util/error.hpp"
 #include "viewport3d.hpp"
 #include "window_layout.hpp"
+#include "work_path.hpp"
 
 namespace kerf {
 
@@ -46,6 +48,7 @@ MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(p
   createDocks();
   layout_ = new WindowLayout(this, centralSplitter_);
   createMenus();
+  workPath_ = new WorkPath(this, facesStack_);
   connectDocument();
   autosave_ = new Autosave(document_, {}, 5000, this);
   connect(autosave_, &Autosave::failed, this, [this](const QString& m) { logMessage("warning", m); });
@@ -134,7 +137,9 @@ void MainWindow::createViews() {
 
   centralSplitter_ = new QSplitter(Qt::Horizontal, this);
   centralSplitter_->setObjectName("centralSplitter");
-  centralSplitter_->addWidget(facesPane);
+  facesStack_ = new QStackedWidget(this);
+  facesStack_->addWidget(facesPane);
+  centralSplitter_->addWidget(facesStack_);
   centralSplitter_->addWidget(viewport_);
   centralSplitter_->setStretchFactor(0, 1);
   centralSplitter_->setStretchFactor(1, 1);

@@ -44,6 +44,7 @@ QString documentsFolder() {
 
 void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->setObjectName("fileMenu");
   file->addAction(tr("Open &Demo Block"), this, [this] {
     if (maybeSave()) openDemo(defaultDemoFolder());
   });
@@ -165,6 +166,7 @@ void MainWindow::documentLoaded(const LoadedDocument& loaded) {
                    loaded.name, loaded.photos);
   if (isProjectFile || QFileInfo(loaded.path).isDir()) recent_->add(loaded.path);
   logMessage("info", tr("Opened %1").arg(loaded.path));
+  emit documentOpened(loaded.path);
   const FaceSet& heldOut = loaded.project->heldOutFaces;
   if (!heldOut.empty())
     logMessage("info", tr("Held out (leave-one-face-out): face %1. Detect Rings, Fit Growth Field and Infer "
