@@ -56,7 +56,7 @@ MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(p
   auto* status = new JobStatusWidget(jobs_, this);
   documentLabel_ = new QLabel(this);
   cursorLabel_ = new QLabel(this);
-  cursorLabel_->setMinimumWidth(360);
+  cursorLabel_->setMinimumWidth(220);  // room for the fit in words beside it (1366 px)
   statusBar()->addWidget(documentLabel_, 1);
   statusBar()->addPermanentWidget(cursorLabel_);
   statusBar()->addPermanentWidget(status);

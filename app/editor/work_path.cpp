@@ -83,10 +83,6 @@ WorkPath::WorkPath(MainWindow* window, QStackedWidget* facesStack)
   toolBar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
   toolBar_->addAction(openPhotosAction_);
   toolBar_->addAction(reconstructAction_);
-  // Wide enough for the longer "Stop Reconstruct" too (the menu bar sizes its corner once).
-  reconstructAction_->setText(tr("Stop &Reconstruct"));
-  toolBar_->setMinimumWidth(toolBar_->sizeHint().width());
-  reconstructAction_->setText(tr("&Reconstruct"));
   // As high as the menus: the menu bar must not grow.
   toolBar_->setContentsMargins(0, 0, 0, 0);
   toolBar_->layout()->setContentsMargins(0, 0, 0, 0);
@@ -162,8 +158,14 @@ void WorkPath::showPhotosOnBlock(bool on) {
 void WorkPath::updateActions() {
   const Document* document = window_->document();
   const bool running = isRunning();
-  reconstructAction_->setEnabled(running || (window_->hasDocument() && document->hasPhotos() && !document->log()));
-  reconstructAction_->setText(running ? tr("Stop &Reconstruct") : tr("&Reconstruct"));
+  reconstructAction_->setEnabled(running ||
+                                 (window_->hasDocument() && document->hasPhotos() && !document->log()));
+  const QString text = running ? tr("Stop &Reconstruct") : tr("&Reconstruct");
+  if (reconstructAction_->text() == text) return;
+  reconstructAction_->setText(text);
+  // The menu bar places its corner by the size it had: place it again for the new text.
+  toolBar_->adjustSize();
+  window_->menuBar()->setCornerWidget(toolBar_, Qt::TopRightCorner);
 }
 
 // While Reconstruct runs, its stage and progress take the fit's place in the status bar (the job status
