@@ -44,17 +44,20 @@ QString explainFit(double lossRings, bool pithSideAmbiguous) {
       text += tr(" Cuts through the block can be trusted to show the rings where they are.");
       break;
     case FitGrade::Rough:
-      text += tr(" Look at the yellow and red ring lines (Rings ▸ Show Fit Residuals): a wrong or broken "
-                 "trace pulls the fit; correct it and fit again.");
+      text +=
+          tr(" Look at the yellow and red ring lines (Rings ▸ Show Fit Residuals): a wrong or broken "
+             "trace pulls the fit; correct it and fit again.");
       break;
     case FitGrade::Poor:
-      text += tr(" The field does not follow the rings: correct the red ring lines (Rings ▸ Show Fit "
-                 "Residuals), or trace a few rings by hand, and fit again.");
+      text +=
+          tr(" The field does not follow the rings: correct the red ring lines (Rings ▸ Show Fit "
+             "Residuals), or trace a few rings by hand, and fit again.");
       break;
   }
   if (pithSideAmbiguous)
-    text += tr(" The rings fit as well with the pith on the other side of the block: Rings ▸ Use Other Pith "
-               "Candidate shows it.");
+    text +=
+        tr(" The rings fit as well with the pith on the other side of the block: Rings ▸ Use Other Pith "
+           "Candidate shows it.");
   return text;
 }
 

@@ -207,8 +207,7 @@ void MainWindow::fitGrowthField() {
 
 // A fit that has landed: applied as one undo step, its residuals drawn over the faces, its quality said.
 bool MainWindow::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
-  for (const QString& line : fit->report)
-    logMessage(line.startsWith("warning") ? "warning" : "info", line);
+  for (const QString& line : fit->report) logMessage(line.startsWith("warning") ? "warning" : "info", line);
   try {
     document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"), fit->knots);
   } catch (const InputError& e) {

@@ -26,8 +26,8 @@ void reconstructFromPhotos(const ReconstructInput& input, const Progress& progre
   start(ReconstructStage::Rings);
   std::array<QImage, 6> photos = input.photos;
   clearFaces(photos, input.heldOut);
-  const auto rings = std::make_shared<const RingDetection>(
-      detectRings(photos, input.block, progress.part(0.0, kRingsEnd)));
+  const auto rings =
+      std::make_shared<const RingDetection>(detectRings(photos, input.block, progress.part(0.0, kRingsEnd)));
   send({ReconstructStage::Rings, false, rings});
   progress.throwIfCancelled();
 
@@ -66,9 +66,9 @@ void reconstructFromPhotos(const ReconstructInput& input, const Progress& progre
   };
   ReconstructEvent landed;
   landed.stage = ReconstructStage::Appearance;
-  landed.appearance = std::make_shared<const TextureJobResult>(inferTextureFromPhotos(
-      input.block, field->params, field->rates, photos, options, progress.part(kFieldEnd, 1.0),
-      appearancePreview));
+  landed.appearance = std::make_shared<const TextureJobResult>(
+      inferTextureFromPhotos(input.block, field->params, field->rates, photos, options,
+                             progress.part(kFieldEnd, 1.0), appearancePreview));
   send(landed);
 }
 

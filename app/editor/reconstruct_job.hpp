@@ -32,12 +32,12 @@ struct ReconstructInput {
 // One thing that happened, in order; exactly one of the pointers is set unless `started`.
 struct ReconstructEvent {
   ReconstructStage stage = ReconstructStage::Rings;
-  bool started = false;  // the stage begins
-  std::shared_ptr<const RingDetection> rings;                                 // Rings landed
+  bool started = false;                                                        // the stage begins
+  std::shared_ptr<const RingDetection> rings;                                  // Rings landed
   std::shared_ptr<const std::pair<WoodParameters, GrowthRates>> fieldPreview;  // Field, while fitting
-  std::shared_ptr<const GrowthFitResult> field;                               // Field landed
-  std::shared_ptr<const WoodParameters> appearancePreview;                    // Appearance, while inferring
-  std::shared_ptr<const TextureJobResult> appearance;                         // Appearance landed
+  std::shared_ptr<const GrowthFitResult> field;                                // Field landed
+  std::shared_ptr<const WoodParameters> appearancePreview;                     // Appearance, while inferring
+  std::shared_ptr<const TextureJobResult> appearance;                          // Appearance landed
 };
 
 using ReconstructEvents = std::function<void(const ReconstructEvent&)>;

@@ -25,9 +25,10 @@ StartPage::StartPage(RecentFiles* recent, QWidget* parent) : QWidget(parent), re
     layout->addWidget(b);
     return b;
   };
-  photos_ = button(tr("Open Photos of a Block…"),
-                   tr("A folder holding a photo of each face of the block, named A_col.png .. F_col.png (any of "
-                      "them may be missing). Photos named otherwise: File ▸ Import Photos."));
+  photos_ =
+      button(tr("Open Photos of a Block…"),
+             tr("A folder holding a photo of each face of the block, named A_col.png .. F_col.png (any of "
+                "them may be missing). Photos named otherwise: File ▸ Import Photos."));
   project_ = button(tr("Open Project…"), tr("A Kerf project (.kerf) you saved before"));
   demo_ = button(tr("Open the Demo Block"),
                  tr("A 40 mm block of a made-up wood, with photos of its six faces, to try Kerf on"));
@@ -57,7 +58,8 @@ void StartPage::refresh() {
   recentList_->clear();
   for (const QString& path : recent_->files()) {
     if (!QFileInfo::exists(path)) continue;
-    auto* item = new QListWidgetItem(QFileInfo(path).fileName() + QStringLiteral("  —  ") + path, recentList_);
+    auto* item =
+        new QListWidgetItem(QFileInfo(path).fileName() + QStringLiteral("  —  ") + path, recentList_);
     item->setData(Qt::UserRole, path);
     item->setToolTip(path);
   }

@@ -8,8 +8,8 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QToolButton>
 #include <QTimer>
+#include <QToolButton>
 #include <algorithm>
 
 namespace kerf {
@@ -110,7 +110,8 @@ void WindowLayout::restore() {
   // The default: most of the screen, at most 1600 x 1000.
   if (const QScreen* screen = QGuiApplication::primaryScreen()) {
     const QSize available = screen->availableGeometry().size();
-    window_->resize(std::min(1600, available.width() * 92 / 100), std::min(1000, available.height() * 92 / 100));
+    window_->resize(std::min(1600, available.width() * 92 / 100),
+                    std::min(1000, available.height() * 92 / 100));
   }
   QTimer::singleShot(0, this, [this] { sizeDocks(); });
 }

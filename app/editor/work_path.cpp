@@ -86,8 +86,9 @@ WorkPath::WorkPath(MainWindow* window, QStackedWidget* facesStack)
   // As high as the menus: the menu bar must not grow.
   toolBar_->setContentsMargins(0, 0, 0, 0);
   toolBar_->layout()->setContentsMargins(0, 0, 0, 0);
-  toolBar_->setStyleSheet(QStringLiteral("QToolBar { border: 0; padding: 0; spacing: 2px; } "
-                                         "QToolButton { padding: 0 6px; }"));
+  toolBar_->setStyleSheet(
+      QStringLiteral("QToolBar { border: 0; padding: 0; spacing: 2px; } "
+                     "QToolButton { padding: 0 6px; }"));
   toolBar_->setMaximumHeight(window_->menuBar()->sizeHint().height());
   window_->menuBar()->setCornerWidget(toolBar_, Qt::TopRightCorner);
 
@@ -201,8 +202,9 @@ void WorkPath::reconstruct() {
     emit reconstructFailed(message);
   };
   if (!window_->hasDocument() || !document->hasPhotos() || document->log()) {
-    refuse(tr("Reconstruct needs photos of the block's faces: File ▸ Open Photos (a folder of A_col.png .. "
-              "F_col.png), or File ▸ Import Photos."));
+    refuse(
+        tr("Reconstruct needs photos of the block's faces: File ▸ Open Photos (a folder of A_col.png .. "
+           "F_col.png), or File ▸ Import Photos."));
     return;
   }
   JobRunner* jobs = window_->jobs();

@@ -17,6 +17,7 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <QMessageBox>
 #include "cut_view.hpp"
 #include "demo_window.hpp"
 #include "document.hpp"
@@ -25,7 +26,6 @@
 #include "gl/surface_format.hpp"
 #include "job_runner.hpp"
 #include "log_panel.hpp"
-#include <QMessageBox>
 #include "main_window.hpp"
 #include "quick_texture_options.hpp"
 #include "start_page.hpp"
@@ -86,7 +86,8 @@ void TestFirstHour::fitInWords() {
   QCOMPARE(gradeFit(0.5), FitGrade::Poor);
   QCOMPARE(gradeFit(std::nan("")), FitGrade::Poor);
   QCOMPARE(summarizeFit(0.047, false), QStringLiteral("Fit: good, rings off by 5 % of a ring width"));
-  QCOMPARE(summarizeFit(0.3, true), QStringLiteral("Fit: poor, rings off by 30 % of a ring width; pith side unsure"));
+  QCOMPARE(summarizeFit(0.3, true),
+           QStringLiteral("Fit: poor, rings off by 30 % of a ring width; pith side unsure"));
   QVERIFY(explainFit(0.15, false).contains(QStringLiteral("Show Fit Residuals")));
 }
 
@@ -117,8 +118,8 @@ void TestFirstHour::reconstructNeedsPhotos() {
 
 void TestFirstHour::walkthroughFromPhotosToCut() {
   if (!QFileInfo::exists(kSample + "/A_col.png"))
-    QSKIP(qPrintable(QStringLiteral("%1 is absent (../shared is not checked out): no walkthrough on CN03")
-                         .arg(kSample)));
+    QSKIP(qPrintable(
+        QStringLiteral("%1 is absent (../shared is not checked out): no walkthrough on CN03").arg(kSample)));
   // CN03's six photos alone: no ring images, no traces, no project.
   photos_ = dir_.filePath("CN03");
   QVERIFY(QDir().mkpath(photos_));
@@ -170,7 +171,7 @@ void TestFirstHour::walkthroughFromPhotosToCut() {
   QTRY_VERIFY(window_->isActiveWindow());  // shortcuts need the active window (xvfb has no window manager)
   QTest::keyClick(window_.get(), Qt::Key_R, Qt::ControlModifier);
   QVERIFY2(path->isRunning(), qPrintable(failed.isEmpty() ? QStringLiteral("Ctrl+R did not start it")
-                                                         : failed.front().front().toString()));
+                                                          : failed.front().front().toString()));
   QCOMPARE(path->reconstructAction()->text().remove('&'), QStringLiteral("Stop Reconstruct"));
   QVERIFY(QTest::qWaitFor([&] { return done.count() + failed.count() > 0; }, kTimeoutMs));
   QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
@@ -180,7 +181,8 @@ void TestFirstHour::walkthroughFromPhotosToCut() {
   QCOMPARE(landed, all);
   QCOMPARE(stageNames.size(), 3);
   for (int i = 0; i < 3; ++i)
-    QVERIFY2(stageNames[i].startsWith(QStringLiteral("Reconstruct %1/3").arg(i + 1)), qPrintable(stageNames[i]));
+    QVERIFY2(stageNames[i].startsWith(QStringLiteral("Reconstruct %1/3").arg(i + 1)),
+             qPrintable(stageNames[i]));
 
   // The document: detected traces, the fitted field, the inferred wood, each one undo step.
   Document* document = window_->document();
