@@ -109,7 +109,8 @@ CutPlaneControls::CutPlaneControls(QWidget* parent) : QWidget(parent) {
     }
   });
 
-  auto* planes = new QHBoxLayout;
+  // End grain above the two lengthwise cuts: the column stays narrow, so the cut panel beside it is wide.
+  auto* planes = new QGridLayout;
   planes->setSpacing(4);
   const QString lengthwise = tr(
       "Long grain, quartersawn or flat-sawn depending on its angle to the rings: quartersawn (straight "
@@ -139,7 +140,10 @@ CutPlaneControls::CutPlaneControls(QWidget* parent) : QWidget(parent) {
     principal_[i]->setObjectName(QLatin1String(kPlanes[i].name));
     principal_[i]->setToolTip(kPlanes[i].tip);
     principal_[i]->setAutoDefault(false);
-    planes->addWidget(principal_[i], 1);
+    if (i == 0)
+      planes->addWidget(principal_[i], 0, 0, 1, 2);
+    else
+      planes->addWidget(principal_[i], 1, i - 1);
     const CutPlaneSetting target = kPlanes[i].setting;
     connect(principal_[i], &QPushButton::clicked, this, [this, target] { emitSetting(target, true); });
   }

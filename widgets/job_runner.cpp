@@ -86,6 +86,13 @@ int JobRunner::start(QString name, Work work, Callback onDone, Callback onPrevie
   return id;
 }
 
+void JobRunner::setJobName(int id, const QString& name) {
+  const auto it = jobs_.find(id);
+  if (it == jobs_.end()) return;
+  it->second.name = name;
+  emit jobRenamed(id, name);
+}
+
 void JobRunner::cancel(int id) {
   const auto it = jobs_.find(id);
   if (it == jobs_.end()) return;

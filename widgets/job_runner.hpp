@@ -46,6 +46,8 @@ class JobRunner : public QObject {
   int start(QString name, Work work, Callback onDone, Callback onPreview = {}, bool cancelsPrevious = true);
 
   void cancel(int id);  // no-op for a job that is not running
+  // A job of named stages says which one it is in (jobRenamed); no-op for a job that is not running.
+  void setJobName(int id, const QString& name);
   void cancelAll();
 
   bool isBusy() const { return !jobs_.empty(); }  // some job has neither finished nor been cancelled
@@ -62,6 +64,7 @@ class JobRunner : public QObject {
 
  signals:
   void jobStarted(int id, const QString& name);
+  void jobRenamed(int id, const QString& name);
   void jobProgress(int id, double fraction);
   void jobFinished(int id);
   void jobFailed(int id, const QString& message);

@@ -37,6 +37,7 @@ JobStatusWidget::JobStatusWidget(JobRunner* runner, QWidget* parent) : QWidget(p
   connect(escape_, &QShortcut::activated, this, &JobStatusWidget::cancelShownJob);
 
   connect(runner_, &JobRunner::jobStarted, this, &JobStatusWidget::refresh);
+  connect(runner_, &JobRunner::jobRenamed, this, &JobStatusWidget::refresh);
   connect(runner_, &JobRunner::jobFinished, this, &JobStatusWidget::refresh);
   connect(runner_, &JobRunner::jobFailed, this, &JobStatusWidget::refresh);
   connect(runner_, &JobRunner::jobCancelled, this, &JobStatusWidget::refresh);

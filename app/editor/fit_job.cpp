@@ -38,6 +38,20 @@ RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& bloc
   return detection;
 }
 
+std::vector<RingTrace> detectedRingTraces(const RingDetection& detection, const Block& block) {
+  std::vector<RingTrace> traces;
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    if (detection.arl[i].width <= 0) continue;
+    std::vector<FaceContour> contours;
+    for (const auto& pixels : detection.contours[i]) contours.push_back({face, pixels});
+    auto faceTraces =
+        tracesFromContours(contours, block, glm::ivec2(detection.arl[i].width, detection.arl[i].height));
+    traces.insert(traces.end(), faceTraces.begin(), faceTraces.end());
+  }
+  return traces;
+}
+
 std::array<std::vector<QPolygonF>, 6> contourPolylines(const RingDetection& detection) {
   std::array<std::vector<QPolygonF>, 6> lines;
   for (int i = 0; i < 6; ++i)

@@ -42,6 +42,10 @@ struct RingDetection {
 RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& block,
                           const Progress& progress = {});
 
+// The detected contours as ring traces of the document (face mm; origin Detected), for
+// replaceDetectedTraces: what Detect Rings adds and Fit Growth Field then fits.
+std::vector<RingTrace> detectedRingTraces(const RingDetection& detection, const Block& block);
+
 // The contours as polylines in continuous image coordinates (pixel centres at x + 0.5, y + 0.5), for
 // FacesView::setOverlayPolylines, with the sizes of the images they belong to.
 std::array<std::vector<QPolygonF>, 6> contourPolylines(const RingDetection& detection);

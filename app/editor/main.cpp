@@ -1,5 +1,6 @@
-// kerf [PROJECT|SAMPLE_FOLDER] [--screenshot FILE]: the desktop editor. Without a document it opens
-// the bundled demo; with --screenshot it saves the window once the faces have rendered and exits
+// kerf [PROJECT|SAMPLE_FOLDER] [--screenshot FILE]: the desktop editor. Without a document it shows its
+// start page (with --screenshot it opens the bundled demo); with --screenshot it saves the window once the
+// faces have rendered and exits
 // (used by the tests and for the README's picture).
 #include <QApplication>
 #include <QCommandLineParser>
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
   parser.addVersionOption();
   parser.addPositionalArgument(
       QStringLiteral("document"),
-      QStringLiteral("A .kerf project or a Mokume-style sample folder (default: the demo)."),
+      QStringLiteral("A .kerf project or a Mokume-style sample folder (default: the start page)."),
       QStringLiteral("[PROJECT|SAMPLE_FOLDER]"));
   const QCommandLineOption screenshot(
       QStringLiteral("screenshot"),
@@ -76,14 +77,15 @@ int main(int argc, char** argv) {
   window.show();
   // Start from the event loop, so the window is up before the (possibly slow) demo generation.
   const bool offerRecovery = !parser.isSet(screenshot) && qEnvironmentVariableIsEmpty("KERF_NO_RECOVERY");
-  QTimer::singleShot(0, &window, [&window, documents, offerRecovery] {
+  const bool screenshotting = parser.isSet(screenshot);
+  QTimer::singleShot(0, &window, [&window, documents, offerRecovery, screenshotting] {
     if (offerRecovery) window.offerRecovery();  // may open the recovered document instead
     if (window.hasDocument()) return;
-    if (documents.isEmpty()) {
-      window.openDemo(kerf::defaultDemoFolder());
-    } else {
+    if (!documents.isEmpty()) {
       window.openDocument(documents.front());
-    }
+    } else if (screenshotting) {  // a screenshot needs a document: the demo
+      window.openDemo(kerf::defaultDemoFolder());
+    }  // else the start page: photos, a project, the demo or a recent file
   });
   return app.exec();
 }

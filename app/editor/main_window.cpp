@@ -10,9 +10,9 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QScrollArea>
-#include <QSettings>
 #include <QSlider>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -36,6 +36,8 @@
 #include "render/renderers.hpp"
 #include "util/error.hpp"
 #include "viewport3d.hpp"
+#include "window_layout.hpp"
+#include "work_path.hpp"
 
 namespace kerf {
 
@@ -44,7 +46,9 @@ MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(p
   jobs_ = new JobRunner(this);
   createViews();
   createDocks();
+  layout_ = new WindowLayout(this, centralSplitter_);
   createMenus();
+  workPath_ = new WorkPath(this, facesStack_);
   connectDocument();
   autosave_ = new Autosave(document_, {}, 5000, this);
   connect(autosave_, &Autosave::failed, this, [this](const QString& m) { logMessage("warning", m); });
@@ -52,15 +56,15 @@ MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(p
   auto* status = new JobStatusWidget(jobs_, this);
   documentLabel_ = new QLabel(this);
   cursorLabel_ = new QLabel(this);
-  cursorLabel_->setMinimumWidth(360);
+  cursorLabel_->setMinimumWidth(220);  // room for the fit in words beside it (1366 px)
   statusBar()->addWidget(documentLabel_, 1);
   statusBar()->addPermanentWidget(cursorLabel_);
   statusBar()->addPermanentWidget(status);
   connect(jobs_, &JobRunner::message, this, &MainWindow::logMessage);
 
   setAcceptDrops(true);
-  resize(1280, 800);
-  restoreLayout();
+  layout_->restore();
+  layout_->addDockButtons(statusBar());
   updateTitle();
 }
 
@@ -70,9 +74,7 @@ MainWindow::~MainWindow() {
   // The document is deleted with the children, after this destructor; its last signals (the undo stack
   // turning clean) must not reach this window's slots by then (UBSan: vptr).
   document_->disconnect(this);
-  QSettings settings;
-  settings.setValue("window/geometry", saveGeometry());
-  settings.setValue("window/state", saveState());
+  layout_->save();
 }
 
 DemoOptions MainWindow::demoOptions() {
@@ -133,12 +135,16 @@ void MainWindow::createViews() {
   facesLayout->addWidget(createAnnotationBar(facesPane));
   facesLayout->addWidget(facesView_, 1);
 
-  auto* splitter = new QSplitter(Qt::Horizontal, this);
-  splitter->addWidget(facesPane);
-  splitter->addWidget(viewport_);
-  splitter->setStretchFactor(0, 1);
-  splitter->setStretchFactor(1, 1);
-  setCentralWidget(splitter);
+  centralSplitter_ = new QSplitter(Qt::Horizontal, this);
+  centralSplitter_->setObjectName("centralSplitter");
+  facesStack_ = new QStackedWidget(this);
+  facesStack_->addWidget(facesPane);
+  centralSplitter_->addWidget(facesStack_);
+  centralSplitter_->addWidget(viewport_);
+  centralSplitter_->setStretchFactor(0, 1);
+  centralSplitter_->setStretchFactor(1, 1);
+  centralSplitter_->setChildrenCollapsible(false);
+  setCentralWidget(centralSplitter_);
 
   connect(facesView_, &FacesView::cursorPositionChanged, this,
           [this](const QString& t) { cursorLabel_->setText(t); });
@@ -181,11 +187,13 @@ void MainWindow::createDocks() {
   controlsScroll->setWidgetResizable(true);
   controlsScroll->setFrameShape(QFrame::NoFrame);
   controlsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  controlsScroll->setMinimumWidth(cutControls_->sizeHint().width() + 16);
+  controlsScroll->setMinimumWidth(cutControls_->minimumSizeHint().width() + 16);
   cutLayout->addWidget(controlsScroll);
   cutLayout->addWidget(cutView_, 1);
   auto* cut = new QDockWidget(tr("Cut"), this);
   cut->setObjectName("cutDock");
+  // Its title down the left side: the height goes to the cut itself.
+  cut->setFeatures(cut->features() | QDockWidget::DockWidgetVerticalTitleBar);
   cut->setWidget(cutPane);
   addDockWidget(Qt::BottomDockWidgetArea, cut);
   connect(cutView_, &CutView::cursorPositionChanged, this,
@@ -212,31 +220,7 @@ void MainWindow::createDocks() {
   historyDock->setObjectName("historyDock");
   historyDock->setWidget(history_);
   addDockWidget(Qt::BottomDockWidgetArea, historyDock);
-  tabifyDockWidget(cut, logDock);
-  tabifyDockWidget(logDock, historyDock);
-  cut->raise();
-  createLogDocks();  // main_window_log.cpp
-}
-
-void MainWindow::restoreLayout() {
-  QSettings settings;
-  const QByteArray state = settings.value("window/state").toByteArray();
-  if (state.isEmpty() || qEnvironmentVariableIsSet("KERF_DEFAULT_LAYOUT")) {
-    useDefaultLayout();
-    return;
-  }
-  restoreGeometry(settings.value("window/geometry").toByteArray());
-  restoreState(state);
-}
-
-void MainWindow::useDefaultLayout() {
-  // Once the window has its size: the faces and the 3D block get most of it, the panels start compact.
-  QTimer::singleShot(0, this, [this] {
-    auto* cut = findChild<QDockWidget*>("cutDock");
-    auto* parameters = findChild<QDockWidget*>("parametersDock");
-    resizeDocks({cut}, {std::max(240, height() * 3 / 8)}, Qt::Vertical);
-    resizeDocks({parameters}, {460}, Qt::Horizontal);
-  });
+  createLogDocks();  // main_window_log.cpp; WindowLayout places every dock
 }
 
 void MainWindow::connectDocument() {

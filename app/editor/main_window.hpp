@@ -12,6 +12,7 @@
 #include "document_jobs.hpp"
 #include "export_dialog.hpp"
 #include "fit_job.hpp"
+#include "texture_job.hpp"
 #include "texture/texture_inference.hpp"
 
 class QAction;
@@ -19,6 +20,8 @@ class QActionGroup;
 class QMenu;
 class QLabel;
 class QSlider;
+class QSplitter;
+class QStackedWidget;
 class QToolBar;
 class QUndoView;
 
@@ -47,6 +50,8 @@ class ParameterPanel;
 class PartExportDialog;
 class RecentFiles;
 class Viewport3D;
+class WindowLayout;
+class WorkPath;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -88,6 +93,9 @@ class MainWindow : public QMainWindow {
   LogPanel* log() const { return log_; }
   Autosave* autosave() const { return autosave_; }
   QAction* toggleViewAction() const { return toggleViewAction_; }
+  WindowLayout* windowLayout() const { return layout_; }
+  // The start page, Open Photos, Reconstruct and the fit's quality in the status bar (work_path.hpp).
+  WorkPath* workPath() const { return workPath_; }
   // Photos, Model, Blend, Split, Difference (FaceDisplay order; Ctrl+1 .. Ctrl+5), and the slider of Blend
   // (opacity) and Split (where the line lies).
   QList<QAction*> faceDisplayActions() const;
@@ -161,6 +169,8 @@ class MainWindow : public QMainWindow {
   void logOpened();
   // A panel (showPanel) is shown at full resolution.
   void panelRendered();
+  // A document was opened from `path` (a .kerf file or a folder of photos) and is now the document.
+  void documentOpened(const QString& path);
   // The document has loaded and its faces have rendered (at full resolution).
   void documentReady();
   // Loading failed; the message is also shown in a (non-blocking) message box and the log.
@@ -187,12 +197,18 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  friend class WorkPath;  // the path through the work drives the rings, fit and texture steps
   void createViews();
   void createDocks();
   void createMenus();
   void createRingsMenu();
   void createTextureMenu();  // main_window_texture.cpp
   void showTexturePreview(const WoodParameters& params);
+  // Results that have landed (from their own action or from Reconstruct), applied as one undo step each;
+  // false (with a message) when the result is not valid.
+  void showRingDetection(std::shared_ptr<const RingDetection> detection);
+  bool applyFit(std::shared_ptr<const GrowthFitResult> fit);
+  bool applyTexture(std::shared_ptr<const TextureJobResult> texture);
   QAction* createImportAction();  // main_window_import.cpp
   void createLogDocks();          // main_window_log.cpp
   void createLogActions(QMenu* file);
@@ -212,8 +228,6 @@ class MainWindow : public QMainWindow {
   void applyDetectedTraces(const RingDetection& detection);
   void ringJobEnded(int id, const QString& message);
   void connectDocument();
-  void restoreLayout();
-  void useDefaultLayout();
 
   void chooseDocument();
   void startLoad(const QString& what, std::function<LoadedDocument(const Progress&)> load);
@@ -260,6 +274,10 @@ class MainWindow : public QMainWindow {
   TextureInferenceOptions textureOptions_;
   std::shared_ptr<const RingDetection> ringDetection_;
 
+  WindowLayout* layout_ = nullptr;
+  WorkPath* workPath_ = nullptr;
+  QStackedWidget* facesStack_ = nullptr;  // the start page, then the faces
+  QSplitter* centralSplitter_ = nullptr;  // the faces | 3D block
   FacesView* facesView_ = nullptr;
   Viewport3D* viewport_ = nullptr;
   CutView* cutView_ = nullptr;

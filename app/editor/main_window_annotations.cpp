@@ -44,17 +44,7 @@ QToolBar* MainWindow::createAnnotationBar(QWidget* parent) {
 }
 
 void MainWindow::applyDetectedTraces(const RingDetection& detection) {
-  const Block& block = document_->project().block;
-  std::vector<RingTrace> traces;
-  for (FaceId face : kAllFaces) {
-    const int i = faceIndex(face);
-    if (detection.arl[i].width <= 0) continue;
-    std::vector<FaceContour> contours;
-    for (const auto& pixels : detection.contours[i]) contours.push_back({face, pixels});
-    auto faceTraces =
-        tracesFromContours(contours, block, glm::ivec2(detection.arl[i].width, detection.arl[i].height));
-    traces.insert(traces.end(), faceTraces.begin(), faceTraces.end());
-  }
+  std::vector<RingTrace> traces = detectedRingTraces(detection, document_->project().block);
   const int count = static_cast<int>(traces.size());
   document_->editAnnotations(replaceDetectedTraces(document_->annotations(), std::move(traces)),
                              tr("Detect rings (%n traces)", "", count));

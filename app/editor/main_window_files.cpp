@@ -22,6 +22,7 @@
 #include "render/renderers.hpp"
 #include "util/error.hpp"
 #include "viewport3d.hpp"
+#include "window_layout.hpp"
 
 namespace kerf {
 namespace {
@@ -32,6 +33,9 @@ QString documentPathFor(const QString& chosen) {
   return info.suffix().compare("kerf", Qt::CaseInsensitive) == 0 ? chosen : info.absolutePath();
 }
 
+// Through the block's centre, oblique to the faces, so it shows the rings' cones as a saw would.
+constexpr CutPlaneSetting kDefaultCut{0.0f, 35.0f, 20.0f};
+
 QString documentsFolder() {
   return QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
 }
@@ -40,6 +44,7 @@ QString documentsFolder() {
 
 void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->setObjectName("fileMenu");
   file->addAction(tr("Open &Demo Block"), this, [this] {
     if (maybeSave()) openDemo(defaultDemoFolder());
   });
@@ -94,6 +99,7 @@ void MainWindow::createMenus() {
   connect(showContoursAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+  view->addAction(layout_->resetAction());
 
   createRingsMenu();
   createTextureMenu();
@@ -149,10 +155,18 @@ void MainWindow::documentLoaded(const LoadedDocument& loaded) {
   documentReadyPending_ = true;
   displayChosenByUser_ = false;
   renderings_ = {};
-  document_->reset(*loaded.project, isProjectFile ? QFileInfo(loaded.path).absoluteFilePath() : QString(),
+  Project project = *loaded.project;
+  // The cut is why a woodworker opens Kerf: a document that never placed one opens with a default cut
+  // shown (a view setting, so the document stays unmodified).
+  if (!project.cutPlane) {
+    project.cutPlane = kDefaultCut;
+    project.cutEnabled = true;
+  }
+  document_->reset(project, isProjectFile ? QFileInfo(loaded.path).absoluteFilePath() : QString(),
                    loaded.name, loaded.photos);
   if (isProjectFile || QFileInfo(loaded.path).isDir()) recent_->add(loaded.path);
   logMessage("info", tr("Opened %1").arg(loaded.path));
+  emit documentOpened(loaded.path);
   const FaceSet& heldOut = loaded.project->heldOutFaces;
   if (!heldOut.empty())
     logMessage("info", tr("Held out (leave-one-face-out): face %1. Detect Rings, Fit Growth Field and Infer "

@@ -24,6 +24,7 @@ namespace kerf {
 
 void MainWindow::createRingsMenu() {
   QMenu* rings = menuBar()->addMenu(tr("&Rings"));
+  rings->setObjectName("ringsMenu");
   rings->setToolTipsVisible(true);
   detectRingsAction_ = rings->addAction(tr("&Detect Rings"), this, &MainWindow::detectRings);
   detectRingsAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
@@ -109,27 +110,31 @@ void MainWindow::detectRings() {
       },
       [this](const QVariant& result) {
         ringJob_ = 0;
-        ringDetection_ = result.value<std::shared_ptr<const RingDetection>>();
-        applyDetectedTraces(*ringDetection_);  // editable traces of the document: one undo step
-        showContoursAction_->setEnabled(true);
-        facesView_->setOverlayVisible(showContoursAction_->isChecked());
-        QStringList counts;
-        double seconds = 0;
-        for (FaceId face : kAllFaces) {
-          const int i = faceIndex(face);
-          if (ringDetection_->arl[i].empty()) continue;
-          counts
-              << QStringLiteral("%1 %2").arg(QChar(faceLetter(face))).arg(ringDetection_->contours[i].size());
-          seconds += ringDetection_->seconds[i];
-        }
-        logMessage("info", tr("Rings detected on %1 faces: %2 contours (%3), %4 s")
-                               .arg(ringDetection_->facesDetected)
-                               .arg(ringDetection_->contourCount())
-                               .arg(counts.join(", "))
-                               .arg(seconds, 0, 'f', 2));
-        emit ringsDetected();
+        showRingDetection(result.value<std::shared_ptr<const RingDetection>>());
       },
       {}, false);
+}
+
+// A detection that has landed: kept with the window, its contours the document's detected ring traces.
+void MainWindow::showRingDetection(std::shared_ptr<const RingDetection> detection) {
+  ringDetection_ = std::move(detection);
+  applyDetectedTraces(*ringDetection_);  // editable traces of the document: one undo step
+  showContoursAction_->setEnabled(true);
+  facesView_->setOverlayVisible(showContoursAction_->isChecked());
+  QStringList counts;
+  double seconds = 0;
+  for (FaceId face : kAllFaces) {
+    const int i = faceIndex(face);
+    if (ringDetection_->arl[i].empty()) continue;
+    counts << QStringLiteral("%1 %2").arg(QChar(faceLetter(face))).arg(ringDetection_->contours[i].size());
+    seconds += ringDetection_->seconds[i];
+  }
+  logMessage("info", tr("Rings detected on %1 faces: %2 contours (%3), %4 s")
+                         .arg(ringDetection_->facesDetected)
+                         .arg(ringDetection_->contourCount())
+                         .arg(counts.join(", "))
+                         .arg(seconds, 0, 'f', 2));
+  emit ringsDetected();
 }
 
 void MainWindow::fitGrowthField() {
@@ -191,35 +196,39 @@ void MainWindow::fitGrowthField() {
       },
       [this](const QVariant& result) {
         fitJob_ = 0;
-        const auto fit = result.value<std::shared_ptr<const GrowthFitResult>>();
-        for (const QString& line : fit->report)
-          logMessage(line.startsWith("warning") ? "warning" : "info", line);
-        try {
-          document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"), fit->knots);
-        } catch (const InputError& e) {
-          showError(tr("The fitted growth field is not valid: %1").arg(QString::fromUtf8(e.what())));
-          modelChanged();  // back from the preview to the document's field
-          emit ringJobFailed(lastError_);
-          return;
-        }
-        lastFit_ = fit;
-        otherPithAction_->setEnabled(fit->alternative.has_value());
-        showFitResiduals(*fit);
-        logMessage(
-            fit->ambiguous ? "warning" : "info",
-            tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
-                .arg(fit->lossRings, 0, 'f', 4)
-                .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
-                                                             "Other Pith Candidate shows the other side")
-                                                        : tr("; the pith side is ambiguous"))
-                                    : QString()));
-        emit growthFieldFitted();
+        applyFit(result.value<std::shared_ptr<const GrowthFitResult>>());
       },
       [this](const QVariant& preview) {
         const auto field = preview.value<std::shared_ptr<const std::pair<WoodParameters, GrowthRates>>>();
         if (field) showFitPreview(field->first, field->second);
       },
       false);
+}
+
+// A fit that has landed: applied as one undo step, its residuals drawn over the faces, its quality said.
+bool MainWindow::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
+  for (const QString& line : fit->report) logMessage(line.startsWith("warning") ? "warning" : "info", line);
+  try {
+    document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"), fit->knots);
+  } catch (const InputError& e) {
+    showError(tr("The fitted growth field is not valid: %1").arg(QString::fromUtf8(e.what())));
+    modelChanged();  // back from the preview to the document's field
+    emit ringJobFailed(lastError_);
+    return false;
+  }
+  lastFit_ = fit;
+  otherPithAction_->setEnabled(fit->alternative.has_value());
+  showFitResiduals(*fit);
+  logMessage(
+      fit->ambiguous ? "warning" : "info",
+      tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
+          .arg(fit->lossRings, 0, 'f', 4)
+          .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
+                                                       "Other Pith Candidate shows the other side")
+                                                  : tr("; the pith side is ambiguous"))
+                              : QString()));
+  emit growthFieldFitted();
+  return true;
 }
 
 // The field being fitted, shown in the 3D view, the cut and the faces before it is applied.

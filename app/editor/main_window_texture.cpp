@@ -68,26 +68,31 @@ void MainWindow::inferTexture() {
       },
       [this](const QVariant& result) {
         textureJob_ = 0;
-        const auto texture = result.value<std::shared_ptr<const TextureJobResult>>();
-        for (const QString& line : texture->report) logMessage("info", line);
-        try {
-          document_->applyParameters(texture->params, tr("Infer texture"));
-        } catch (const InputError& e) {
-          showError(tr("The inferred texture is not valid: %1").arg(QString::fromUtf8(e.what())));
-          modelChanged();
-          emit textureJobFailed(lastError_);
-          return;
-        }
-        logMessage("info", tr("Texture inferred: loss %1 -> %2 (Ctrl+Z undoes it)")
-                               .arg(texture->lossBefore, 0, 'f', 4)
-                               .arg(texture->lossAfter, 0, 'f', 4));
-        emit textureInferred();
+        applyTexture(result.value<std::shared_ptr<const TextureJobResult>>());
       },
       [this](const QVariant& preview) {
         const auto params = preview.value<std::shared_ptr<const WoodParameters>>();
         if (params && textureJob_) showTexturePreview(*params);
       },
       false);
+}
+
+// An inferred texture that has landed: applied as one undo step.
+bool MainWindow::applyTexture(std::shared_ptr<const TextureJobResult> texture) {
+  for (const QString& line : texture->report) logMessage("info", line);
+  try {
+    document_->applyParameters(texture->params, tr("Infer texture"));
+  } catch (const InputError& e) {
+    showError(tr("The inferred texture is not valid: %1").arg(QString::fromUtf8(e.what())));
+    modelChanged();
+    emit textureJobFailed(lastError_);
+    return false;
+  }
+  logMessage("info", tr("Texture inferred: loss %1 -> %2 (Ctrl+Z undoes it)")
+                         .arg(texture->lossBefore, 0, 'f', 4)
+                         .arg(texture->lossAfter, 0, 'f', 4));
+  emit textureInferred();
+  return true;
 }
 
 // The texture being inferred, on the faces, the 3D view and the cut before it is applied.

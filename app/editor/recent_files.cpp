@@ -47,6 +47,7 @@ void RecentFiles::rebuildMenu() {
     connect(action, &QAction::triggered, this, [this, path] { emit openRequested(path); });
   }
   if (list.isEmpty()) menu_->addAction(tr("No recent files"))->setEnabled(false);
+  emit listChanged();
   menu_->addSeparator();
   menu_->addAction(tr("Clear list"), this, &RecentFiles::clear)->setEnabled(!list.isEmpty());
 }

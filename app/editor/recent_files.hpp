@@ -19,6 +19,7 @@ class RecentFiles : public QObject {
 
  signals:
   void openRequested(QString path);
+  void listChanged();  // added, cleared or pruned (the start page lists them too)
 
  private:
   void rebuildMenu();

@@ -1,0 +1,75 @@
+#include "reconstruct_job.hpp"
+
+#include "geometry/face_set.hpp"
+
+namespace kerf {
+namespace {
+
+// Shares of the progress bar: the appearance takes longest (minutes with the core's defaults).
+constexpr double kRingsEnd = 0.1, kFieldEnd = 0.4;
+
+}  // namespace
+
+void reconstructFromPhotos(const ReconstructInput& input, const Progress& progress,
+                           const ReconstructEvents& events) {
+  const auto send = [&events](ReconstructEvent event) {
+    if (events) events(event);
+  };
+  const auto start = [&send](ReconstructStage stage) {
+    ReconstructEvent event;
+    event.stage = stage;
+    event.started = true;
+    send(event);
+  };
+
+  // 1. The rings on every photo but the held-out ones; they become the document's detected traces.
+  start(ReconstructStage::Rings);
+  std::array<QImage, 6> photos = input.photos;
+  clearFaces(photos, input.heldOut);
+  const auto rings =
+      std::make_shared<const RingDetection>(detectRings(photos, input.block, progress.part(0.0, kRingsEnd)));
+  send({ReconstructStage::Rings, false, rings});
+  progress.throwIfCancelled();
+
+  // 2. The growth field, fitted to those traces (and the user's own) as Fit Growth Field does.
+  start(ReconstructStage::Field);
+  const Annotations annotations =
+      replaceDetectedTraces(input.annotations, detectedRingTraces(*rings, input.block));
+  const GrowthFitPreview fieldPreview = [&send](const WoodParameters& params, const GrowthRates& rates) {
+    ReconstructEvent event;
+    event.stage = ReconstructStage::Field;
+    event.fieldPreview = std::make_shared<const std::pair<WoodParameters, GrowthRates>>(params, rates);
+    send(event);
+  };
+  const auto field = std::make_shared<const GrowthFitResult>(
+      fitGrowthField(rings->arl, input.block, input.params, photos,
+                     progress.part(kRingsEnd, input.inferAppearance ? kFieldEnd : 1.0), annotations.traces,
+                     fieldPreview, annotations.knots, input.heldOut));
+  {
+    ReconstructEvent event;
+    event.stage = ReconstructStage::Field;
+    event.field = field;
+    send(event);
+  }
+  if (!input.inferAppearance) return;
+  progress.throwIfCancelled();
+
+  // 3. The wood's appearance: pores, rays, fibres and colours from the photos, on the fitted field.
+  start(ReconstructStage::Appearance);
+  TextureInferenceOptions options = input.appearance;
+  options.heldOut = input.heldOut;
+  const TexturePreview appearancePreview = [&send](const WoodParameters& params) {
+    ReconstructEvent event;
+    event.stage = ReconstructStage::Appearance;
+    event.appearancePreview = std::make_shared<const WoodParameters>(params);
+    send(event);
+  };
+  ReconstructEvent landed;
+  landed.stage = ReconstructStage::Appearance;
+  landed.appearance = std::make_shared<const TextureJobResult>(
+      inferTextureFromPhotos(input.block, field->params, field->rates, photos, options,
+                             progress.part(kFieldEnd, 1.0), appearancePreview));
+  send(landed);
+}
+
+}  // namespace kerf
