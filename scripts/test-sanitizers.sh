@@ -37,6 +37,7 @@ cd build/asan
 # As scripts/test.sh: everything but the latency measurements in parallel, then those (label `timing`)
 # alone, so that no test's verdict depends on what runs beside it. Both passes run; either failing fails.
 status=0
-nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE timing "$@" || status=1
+# The scripted walkthrough (label `walkthrough`, a whole CN03 reconstruction) runs in scripts/test.sh only.
+nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE 'timing|walkthrough' "$@" || status=1
 nice -n 19 ctest --output-on-failure --timeout 1800 -L timing --no-tests=ignore "$@" || status=1
 exit "$status"
