@@ -180,6 +180,16 @@ struct ProfilePrior {
   }
 };
 
+struct PoreDarknessPrior {
+  double weight, start;
+  template <class T>
+  bool operator()(const T* profile, T* residual) const {
+    using std::log;
+    residual[0] = weight * log((profile[9] + 0.1) / (start + 0.1));
+    return true;
+  }
+};
+
 struct TintPrior {
   double weight;
   template <class T>
@@ -369,6 +379,9 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   }
   problem.SetParameterLowerBound(profile, 8, 0.0);
   problem.SetParameterUpperBound(profile, 8, 3.0);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PoreDarknessPrior, 1, kProfileSize>(
+                               new PoreDarknessPrior{options.poreDarknessWeight, params.poreDarkness}),
+                           nullptr, profile);
   problem.SetParameterLowerBound(profile, 9, 0.0);  // pores.darkness's schema range
   problem.SetParameterUpperBound(profile, 9, 20.0);
   for (const auto& [heart, sapColour] : {std::pair{early, sapEarly}, std::pair{late, sapLate}})
