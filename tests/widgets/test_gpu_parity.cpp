@@ -1,8 +1,12 @@
 // CPU/GPU parity: the GLSL wood model (shaders/wood_model.glsl) and core's model must give the same
 // picture. Renders faces and a slanted cut both ways, offscreen, and compares them.
 #include <QGuiApplication>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
 #include <QtTest>
 #include <memory>
+#include <set>
+#include <string>
 
 #include <cmath>
 
@@ -10,6 +14,7 @@
 
 #include "demo/demo_block.hpp"
 #include "gl/gpu_image_renderer.hpp"
+#include "gl/wood_program.hpp"
 #include "gl_renderer_fixture.hpp"
 #include "render/renderers.hpp"
 
@@ -87,6 +92,40 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
     for (FaceId face : {FaceId::A, FaceId::B, FaceId::E})
       compare(renderFace(model, face, {96, 96}), renderer_->renderFace(model, face, {96, 96}),
               QString("partial_azimuths_face_%1").arg(faceLetter(face)));
+  }
+
+  // Every schema parameter marked GpuUse::Uniform is read by the linked shaders: an active uniform of the
+  // block program or of the board program (knots.glsl). A parameter marked for the GPU that no shader
+  // reads would be uploaded for nothing, and its slider would change nothing in the 3D view.
+  void everyGpuParameterIsAnActiveUniform() {
+    std::set<std::string> active;
+    for (const WoodSource source : {WoodSource::Block, WoodSource::Board}) {
+      WoodProgram program("image_plane.vert", "image_plane.frag", source);
+      QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+      const GLuint id = program.program().programId();
+      GLint count = 0, longest = 0;
+      gl->glGetProgramiv(id, GL_ACTIVE_UNIFORMS, &count);
+      gl->glGetProgramiv(id, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+      QVERIFY(count > 0);
+      std::string name(static_cast<std::size_t>(longest) + 1, '\0');
+      for (GLint i = 0; i < count; ++i) {
+        GLsizei length = 0;
+        GLint size = 0;
+        GLenum type = 0;
+        gl->glGetActiveUniform(id, static_cast<GLuint>(i), longest + 1, &length, &size, &type, name.data());
+        active.insert(name.substr(0, static_cast<std::size_t>(length)));
+      }
+    }
+    int checked = 0;
+    for (const ParamSpec& spec : parameterSchema()) {
+      if (spec.gpu != GpuUse::Uniform) continue;
+      ++checked;
+      const std::string uniform = glslUniformName(spec);
+      QVERIFY2(active.count(uniform),
+               qPrintable(QString::fromStdString(uniform + " (" + std::string(spec.id) +
+                                                 ") is marked Uniform in the schema but no linked program reads it")));
+    }
+    QVERIFY(checked > 40);
   }
 
   // Knots in the block (Mokume Sec. 5.2.4): two knots from the pith through the block, merged by the
