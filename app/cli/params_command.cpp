@@ -41,19 +41,20 @@ Command addParamsCommand(CLI::App& app) {
               nlohmann::ordered_json fits = nlohmann::ordered_json::array();
               for (const FitBy fit : {FitBy::Rings, FitBy::Colour, FitBy::Texture})
                 if (spec.fittedBy(fit)) fits.push_back(fitName(fit));
-              nlohmann::ordered_json entry = {{"id", spec.id},
-                                              {"group", spec.group},
-                                              {"group_title", parameterGroupTitle(spec.group)},
-                                              {"label", spec.label},
-                                              {"unit", spec.unit},
-                                              {"kind", paramKindName(spec.kind)},
-                                              {"default", def},
-                                              {"soft_range", {spec.softMin, spec.softMax}},
-                                              {"hard_range", {spec.hardMin, spec.hardMax}},
-                                              {"scale", scaleName(spec.scale)},
-                                              {"scope", spec.scope == ParamScope::Block ? "block" : "species"},
-                                              {"fittable", spec.fittable()},
-                                              {"fits", fits}};
+              nlohmann::ordered_json entry = {
+                  {"id", spec.id},
+                  {"group", spec.group},
+                  {"group_title", parameterGroupTitle(spec.group)},
+                  {"label", spec.label},
+                  {"unit", spec.unit},
+                  {"kind", paramKindName(spec.kind)},
+                  {"default", def},
+                  {"soft_range", {spec.softMin, spec.softMax}},
+                  {"hard_range", {spec.hardMin, spec.hardMax}},
+                  {"scale", scaleName(spec.scale)},
+                  {"scope", spec.scope == ParamScope::Block ? "block" : "species"},
+                  {"fittable", spec.fittable()},
+                  {"fits", fits}};
               if (spec.search.searched)
                 entry["texture_search"] = {{"scale", scaleName(spec.search.scale)},
                                            {"range", {spec.search.lo, spec.search.hi}}};

@@ -199,7 +199,8 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
     // Sec. 4.3: a dark outline of noisy width where the knot's surface froze at death (T_b = t_death), on
     // the wood that grew after it.
     if (ts > tDeath && ratio < s.knotReachStart) {
-      const float width = s.knotOutlineWidth * (1.0f + s.knotOutlineNoise * noiseAt(outlineNoise_, index, beta, ts));
+      const float width =
+          s.knotOutlineWidth * (1.0f + s.knotOutlineNoise * noiseAt(outlineNoise_, index, beta, ts));
       if (std::abs(tb - tDeath) < width) out.outline = true;
     }
     if (tAlive > tDeath) {

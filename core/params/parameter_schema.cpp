@@ -30,9 +30,11 @@ constexpr SearchRange Search(ParamScale scale, float lo, float hi) {
   { float(a), float(b), float(c) }
 using namespace columns;
 const ParamSpec kSchema[] = {
-#define KERF_PARAM(name, id, group, label, unit, kind, def, smin, smax, hmin, hmax, scale, scope, fits, search, \
-                   gpu, tip)                                                                                   \
+// clang-format off
+#define KERF_PARAM(name, id, group, label, unit, kind, def, smin, smax, hmin, hmax, scale, scope, fits, \
+                   search, gpu, tip)                                                                    \
   {#name, id, group, label, unit, ParamKind::kind, def, smin, smax, hmin, hmax, scale, scope, fits, search, gpu, tip},
+// clang-format on
 #include "params/wood_parameters.def"
 #undef KERF_PARAM
 };

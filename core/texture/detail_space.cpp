@@ -34,7 +34,8 @@ std::vector<DetailCoordinate> allDetailCoordinates() {
   std::vector<DetailCoordinate> out;
   for (const ParamSpec& spec : parameterSchema()) {
     if (!spec.search.searched) continue;
-    out.push_back({std::string(spec.id), spec.search.scale == ParamScale::Log, spec.search.lo, spec.search.hi});
+    out.push_back(
+        {std::string(spec.id), spec.search.scale == ParamScale::Log, spec.search.lo, spec.search.hi});
   }
   out.insert(out.end(), std::begin(kDerived), std::end(kDerived));
   return out;

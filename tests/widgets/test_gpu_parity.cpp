@@ -122,8 +122,9 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
       ++checked;
       const std::string uniform = glslUniformName(spec);
       QVERIFY2(active.count(uniform),
-               qPrintable(QString::fromStdString(uniform + " (" + std::string(spec.id) +
-                                                 ") is marked Uniform in the schema but no linked program reads it")));
+               qPrintable(QString::fromStdString(
+                   uniform + " (" + std::string(spec.id) +
+                   ") is marked Uniform in the schema but no linked program reads it")));
     }
     QVERIFY(checked > 40);
   }

@@ -143,8 +143,9 @@ void KnotTables::bind(QOpenGLShaderProgram& p, int firstUnit) const {
   p.setUniformValue("u_colorRowLength", kRowLength);
   p.setUniformValue("u_tileListRow", kRowLength);
   // The schema's knot parameters (P.knot*), from the field's settings rather than the document's.
-  settings_.forEachParameter(
-      [&p](const ParamSpec& spec, std::span<const float> value) { WoodProgram::setParameter(p, spec, value); });
+  settings_.forEachParameter([&p](const ParamSpec& spec, std::span<const float> value) {
+    WoodProgram::setParameter(p, spec, value);
+  });
 }
 
 }  // namespace kerf

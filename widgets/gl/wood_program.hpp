@@ -43,7 +43,8 @@ class WoodProgram {
   // not use are skipped by OpenGL).
   static void setParameters(QOpenGLShaderProgram& program, const WoodParameters& params);
   // Uploads one parameter's value (1 or 3 floats) to its uniform P.name; nothing for a CpuOnly one.
-  static void setParameter(QOpenGLShaderProgram& program, const ParamSpec& spec, std::span<const float> value);
+  static void setParameter(QOpenGLShaderProgram& program, const ParamSpec& spec,
+                           std::span<const float> value);
 
  private:
   QOpenGLShaderProgram program_;
