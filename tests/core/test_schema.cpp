@@ -119,7 +119,9 @@ TEST(Schema, AttributesAreConsistent) {
       EXPECT_LT(spec.search.lo, spec.search.hi);
       EXPECT_GE(spec.search.lo, spec.hardMin) << "the search may leave the slider, not the hard range";
       EXPECT_LE(spec.search.hi, spec.hardMax);
-      if (spec.search.scale == ParamScale::Log) EXPECT_GT(spec.search.lo, 0.0f);
+      if (spec.search.scale == ParamScale::Log) {
+        EXPECT_GT(spec.search.lo, 0.0f);
+      }
       // Where the search leaves the slider's travel it does so on purpose (pores.darkness, explained in
       // the .def); it always covers at least part of that travel.
       EXPECT_LT(spec.search.lo, spec.softMax);
