@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   # toolchain
   build-essential cmake ninja-build pkg-config clang-format ccache
+  # scripts/check-folder-graph.py (standard library only)
+  python3-minimal
   # core libraries
   libglm-dev libeigen3-dev libceres-dev libopencv-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev

@@ -5,6 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh
+# core/'s include graph: no Qt/OpenGL in core, no folder dependency outside the allowed graph (issue 15).
+python3 scripts/check-folder-graph.py
 cmake -S . -B build/test -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build/test
 cd build/test

@@ -135,11 +135,8 @@ double niceStep(double raw) {
   return (f < 1.5 ? 1.0 : f < 3.5 ? 2.0 : f < 7.5 ? 5.0 : 10.0) * base;
 }
 
-// Sizes and durations whose slider travel spans a factor of 20 or more (widths, lengths, scales) get a
-// logarithmic slider; shares, angles and strengths stay linear.
 bool isLogarithmic(const ParamSpec& spec) {
-  return spec.kind == ParamKind::Scalar && !spec.unit.empty() && spec.unit != "deg" && spec.softMin > 0.0f &&
-         spec.softMax / spec.softMin >= 20.0f;
+  return spec.kind == ParamKind::Scalar && spec.scale == ParamScale::Log;
 }
 
 bool isMultiplierColor(const ParamSpec& spec) {
@@ -321,23 +318,12 @@ struct ParameterPanel::Section {
 };
 
 QString ParameterPanel::groupTitle(const QString& group) {
-  static const std::pair<const char*, const char*> kTitles[] = {
-      {"growth", QT_TR_NOOP("Growth and pith")},
-      {"rings", QT_TR_NOOP("Annual rings")},
-      {"color", QT_TR_NOOP("Colour")},
-      {"distortion", QT_TR_NOOP("Grain distortion")},
-      {"fibers", QT_TR_NOOP("Fibres")},
-      {"pores", QT_TR_NOOP("Pores (vessels)")},
-      {"rays", QT_TR_NOOP("Rays")},
-      {"faces", QT_TR_NOOP("Face tints (photo matching)")},
-      {"model", QT_TR_NOOP("Randomness")},
-  };
-  for (const auto& [id, title] : kTitles) {
-    if (group == QLatin1String(id)) return tr(title);
-  }
-  QString title = group;
-  if (!title.isEmpty()) title[0] = title[0].toUpper();
-  return title;
+  const std::string id = group.toStdString();
+  const std::string_view title = parameterGroupTitle(id);
+  if (!title.empty()) return str(title);
+  QString fallback = group;
+  if (!fallback.isEmpty()) fallback[0] = fallback[0].toUpper();
+  return fallback;
 }
 
 ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {

@@ -9,9 +9,9 @@
 //   Colour   label | colour swatch (opens a picker)    | hex field                                | reset
 //   Colour beyond 0..1 (face tints): label | three multiplier fields R, G, B | swatch              | reset
 //   Vector3  label | three fields x, y, z (unit suffix)                                          | reset
-// Sliders map linearly, or logarithmically for sizes and durations (mm, years) whose soft range spans a
-// factor of 20 or more (widths, lengths, scales), so both ends of the travel are usable. A value typed
-// outside the soft range is kept; the slider then rests at its end.
+// Sliders map linearly or logarithmically as the schema's `scale` column says (Log for sizes and
+// durations whose soft range spans a factor of 20 or more, so both ends of the travel are usable). A value
+// typed outside the soft range is kept; the slider then rests at its end.
 //
 // Edits are reported, never applied to a document: parameterEdited(index, value, finished) with
 // `finished` false for every intermediate value of a slider drag (and of a colour being browsed in the
@@ -68,7 +68,7 @@ class ParameterPanel : public QWidget {
   QSize minimumSizeHint() const override;
   QSize sizeHint() const override;
 
-  // A readable title for a schema group ("pores" -> "Pores (vessels)").
+  // The schema's title of a group ("pores" -> "Pores (vessels)"); an unknown group capitalised.
   static QString groupTitle(const QString& group);
 
  signals:

@@ -7,6 +7,13 @@
 #include "params/parameter_schema.hpp"
 
 namespace kerf::cli {
+namespace {
+
+const char* scaleName(ParamScale scale) {
+  return scale == ParamScale::Log ? "log" : "linear";
+}
+
+}  // namespace
 
 Command addParamsCommand(CLI::App& app) {
   auto* params = app.add_subcommand("params", "Print the parameter schema as JSON");
@@ -31,17 +38,30 @@ Command addParamsCommand(CLI::App& app) {
                       ? nlohmann::ordered_json(spec.defaultValue[0])
                       : nlohmann::ordered_json::array(
                             {spec.defaultValue[0], spec.defaultValue[1], spec.defaultValue[2]});
-              out.push_back({{"id", spec.id},
-                             {"group", spec.group},
-                             {"label", spec.label},
-                             {"unit", spec.unit},
-                             {"kind", paramKindName(spec.kind)},
-                             {"default", def},
-                             {"soft_range", {spec.softMin, spec.softMax}},
-                             {"hard_range", {spec.hardMin, spec.hardMax}},
-                             {"fittable", spec.fittable},
-                             {"glsl_uniform", glslUniformName(spec)},
-                             {"tooltip", spec.tooltip}});
+              nlohmann::ordered_json fits = nlohmann::ordered_json::array();
+              for (const FitBy fit : {FitBy::Rings, FitBy::Colour, FitBy::Texture})
+                if (spec.fittedBy(fit)) fits.push_back(fitName(fit));
+              nlohmann::ordered_json entry = {
+                  {"id", spec.id},
+                  {"group", spec.group},
+                  {"group_title", parameterGroupTitle(spec.group)},
+                  {"label", spec.label},
+                  {"unit", spec.unit},
+                  {"kind", paramKindName(spec.kind)},
+                  {"default", def},
+                  {"soft_range", {spec.softMin, spec.softMax}},
+                  {"hard_range", {spec.hardMin, spec.hardMax}},
+                  {"scale", scaleName(spec.scale)},
+                  {"scope", spec.scope == ParamScope::Block ? "block" : "species"},
+                  {"fittable", spec.fittable()},
+                  {"fits", fits}};
+              if (spec.search.searched)
+                entry["texture_search"] = {{"scale", scaleName(spec.search.scale)},
+                                           {"range", {spec.search.lo, spec.search.hi}}};
+              entry["glsl_uniform"] =
+                  spec.gpu == GpuUse::Uniform ? nlohmann::ordered_json(glslUniformName(spec)) : nullptr;
+              entry["tooltip"] = spec.tooltip;
+              out.push_back(std::move(entry));
             }
             std::cout << out.dump(2) << "\n";
           }};

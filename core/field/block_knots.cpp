@@ -33,13 +33,15 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
   float knotMin = stemTime, sumSmoothing = 0.0f;
   for (const BlockKnot& knot : knots_) {
     const float distance = knotAxisDistance(&knot.origin.x, &knot.direction.x, p);
-    const KnotTerm<float> term = knotTerm(stemTime, distance, stemRadius, knot.speed, ringWidth_, s.kStem, s);
+    const KnotTerm<float> term =
+        knotTerm(stemTime, distance, stemRadius, knot.speed, ringWidth_, s.knotSmoothStem, s);
     if (!(term.window > 0.0f)) continue;  // out of reach: G unchanged, bit for bit
     knotMin = std::min(knotMin, term.time);
     sumSmoothing += term.smoothing;  // Eq. 6
     if (stemTime > 0.0f) {
       // Sec. 4.3: darker inside the knot, fading over knots.edge_softness of its growth time.
-      const float x = (term.time / stemTime - (1.0f - s.edgeSoftness)) / std::max(s.edgeSoftness, 1e-4f);
+      const float x =
+          (term.time / stemTime - (1.0f - s.knotEdgeSoftness)) / std::max(s.knotEdgeSoftness, 1e-4f);
       const float c = std::clamp(x, 0.0f, 1.0f);
       out.darkness = std::max(out.darkness, term.window * (1.0f - c * c * (3.0f - 2.0f * c)));
     }

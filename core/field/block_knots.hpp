@@ -62,7 +62,7 @@ KnotTerm<T> knotTerm(const T& stemTime, const T& knotDistance, const T& stemRadi
                      float ringWidth, const T& kStem, const KnotSettings& s) {
   KnotTerm<T> out{T(0), T(0), T(0)};
   if (!(stemRadius > T(1e-3f))) return out;
-  out.window = knotWindowOf(knotDistance / stemRadius, s.reachStart, s.reachEnd);
+  out.window = knotWindowOf(knotDistance / stemRadius, s.knotReachStart, s.knotReachEnd);
   if (!(out.window > T(0))) return out;
   out.time = knotDistance / (speed * T(ringWidth));
   // One smoothness s for the whole union, as Mokume's Eq. 7 (knots.k_stem), not Larsson's adaptive k:

@@ -54,24 +54,9 @@ static_assert(kNoiseAngles == KnotField::kNoiseTableAngles && kNoiseTimes == Kno
 
 KnotSettings KnotSettings::fromParameters(const WoodParameters& p) {
   KnotSettings s;
-  s.speed = p.knotSpeed;
-  s.speedDecline = p.knotSpeedDecline;
-  s.speedNoise = p.knotSpeedNoise;
-  s.kStem = p.knotSmoothStem;
-  s.kKnot = p.knotSmoothKnot;
-  s.kTransition = p.knotSmoothTransition;
-  s.reachStart = p.knotReachStart;
-  s.reachEnd = p.knotReachEnd;
-  s.deadInversion = p.knotDeadInversion;
-  s.deadTransition = p.knotDeadTransition;
-  s.deadSharpening = p.knotDeadSharpening;
-  s.butterfly = p.knotButterfly;
-  s.darkening = p.knotDarkening;
-  s.edgeSoftness = p.knotEdgeSoftness;
-  s.deadDarkening = p.knotDeadDarkening;
-  s.outlineWidth = p.knotOutlineWidth;
-  s.outlineShade = p.knotOutlineShade;
-  s.outlineNoise = p.knotOutlineNoise;
+#define KERF_PARAM(name, ...) s.name = p.name;
+#include "params/knot_parameters.def"
+#undef KERF_PARAM
   return s;
 }
 
@@ -90,19 +75,19 @@ float smoothingAmount(float a, float b, float k) {
 // Sec. 4.2.1: an algebraic sigmoid of t_delta = t_s - T_b (positive inside the knot).
 float adaptiveK(float stemTime, float knotTime, const KnotSettings& s) {
   const float delta = stemTime - knotTime;
-  const float sig = delta / (s.kTransition + std::abs(delta));
-  return 0.5f * (s.kKnot + s.kStem) + 0.5f * (s.kKnot - s.kStem) * sig;
+  const float sig = delta / (s.knotSmoothTransition + std::abs(delta));
+  return 0.5f * (s.knotSmoothKnot + s.knotSmoothStem) + 0.5f * (s.knotSmoothKnot - s.knotSmoothStem) * sig;
 }
 
 // Sec. 4.2.2.
 float deadKnotFactor(float tau, float beta, const KnotSettings& s) {
-  const float wing = 1.0f - s.butterfly * std::cos(2.0f * beta);  // 1 + b above/below, 1 - b at the sides
-  const float progress = 1.0f - std::exp(-s.deadTransition * std::max(tau, 0.0f));
-  return 1.0f + (s.deadInversion * wing - 1.0f) * progress;
+  const float wing = 1.0f - s.knotButterfly * std::cos(2.0f * beta);  // 1 + b above/below, 1 - b at the sides
+  const float progress = 1.0f - std::exp(-s.knotDeadTransition * std::max(tau, 0.0f));
+  return 1.0f + (s.knotDeadInversion * wing - 1.0f) * progress;
 }
 
 float knotWindow(float ratio, const KnotSettings& s) {
-  return knotWindowOf(ratio, s.reachStart, s.reachEnd);
+  return knotWindowOf(ratio, s.knotReachStart, s.knotReachEnd);
 }
 
 WoodColorMap woodColorMapFromParameters(const WoodParameters& p, float radiusMm) {
@@ -128,7 +113,7 @@ WoodColorMap woodColorMapFromParameters(const WoodParameters& p, float radiusMm)
 
 KnotField::KnotField(LogModel log, const KnotSettings& settings) : log_(std::move(log)), settings_(settings) {
   validate(log_);
-  if (!(settings_.reachEnd > 0.0f) || !(settings_.reachStart > 0.0f)) {
+  if (!(settings_.knotReachEnd > 0.0f) || !(settings_.knotReachStart > 0.0f)) {
     throw InputError("knots.reach_start and knots.reach_end must be > 0");
   }
   allKnots_.resize(log_.knots.size());
@@ -183,9 +168,9 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
   out.time = ts;
   if (ds < 1e-3f) return out;
 
-  const float reach = s.reachEnd * ds;
+  const float reach = s.knotReachEnd * ds;
   const float reach2 = reach * reach;
-  const float maxFraction = 0.9f * std::min(s.reachStart, s.reachEnd);
+  const float maxFraction = 0.9f * std::min(s.knotReachStart, s.knotReachEnd);
   float knotMin = 1e30f, sumDelta = 0.0f;
   for (const int index : knots) {
     const Knot& knot = log_.knots[index];
@@ -203,8 +188,8 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
     const float window = knotWindow(ratio, s);
     const float beta = std::atan2(dz, along);  // around the knot axis: 0 = side, pi/2 = above
     // Speed of the knot's growth, a fraction of the stem's (Sec. 4.1), with periodic noise around its axis.
-    float fraction = (s.speed - s.speedDecline * std::sqrt(ts)) *
-                     (1.0f + s.speedNoise * noiseAt(speedNoise_, index, beta, ts));
+    float fraction = (s.knotSpeed - s.knotSpeedDecline * std::sqrt(ts)) *
+                     (1.0f + s.knotSpeedNoise * noiseAt(speedNoise_, index, beta, ts));
     fraction = std::clamp(fraction, 0.01f, maxFraction);  // keeps T_b > t_s beyond reach_start
     float tb = db / (fraction * rs);
     const float k = adaptiveK(ts, tb, s);  // Sec. 4.2.1
@@ -213,8 +198,9 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
     float delta = tAlive - std::min(ts, tb);  // Eq. 3
     // Sec. 4.3: a dark outline of noisy width where the knot's surface froze at death (T_b = t_death), on
     // the wood that grew after it.
-    if (ts > tDeath && ratio < s.reachStart) {
-      const float width = s.outlineWidth * (1.0f + s.outlineNoise * noiseAt(outlineNoise_, index, beta, ts));
+    if (ts > tDeath && ratio < s.knotReachStart) {
+      const float width =
+          s.knotOutlineWidth * (1.0f + s.knotOutlineNoise * noiseAt(outlineNoise_, index, beta, ts));
       if (std::abs(tb - tDeath) < width) out.outline = true;
     }
     if (tAlive > tDeath) {
@@ -222,16 +208,16 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
       // union sharpens with the time since death, and the smoothing is scaled by f (inverted, butterfly).
       const float tau = ts - tDeath;
       tb += tau;
-      delta = deadKnotFactor(tau, beta, s) * smoothingAmount(ts, tb, k + s.deadSharpening * tau);
+      delta = deadKnotFactor(tau, beta, s) * smoothingAmount(ts, tb, k + s.knotDeadSharpening * tau);
     }
     // Sec. 4.3: a dead knot, where the stem grew on after its death, is darker.
     if (ts > tDeath && tb < ts) {
-      out.deadShade = std::max(out.deadShade, std::min(1.0f, 3.0f * (ts - tDeath)) * s.deadDarkening);
+      out.deadShade = std::max(out.deadShade, std::min(1.0f, 3.0f * (ts - tDeath)) * s.knotDeadDarkening);
     }
     knotMin = std::min(knotMin, tb);
     sumDelta += window * delta;  // Eq. 6, the sum of the pairwise smoothing amounts
     const float inside =
-        1.0f - smoothstep01((tb / ts - (1.0f - s.edgeSoftness)) / std::max(s.edgeSoftness, 1e-4f));
+        1.0f - smoothstep01((tb / ts - (1.0f - s.knotEdgeSoftness)) / std::max(s.knotEdgeSoftness, 1e-4f));
     out.darkness = std::max(out.darkness, window * inside);
     ++out.knotsInReach;
   }
@@ -247,8 +233,8 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
 
 glm::vec3 KnotField::color(const KnotFieldSample& sample, const WoodColorMap& map) const {
   glm::vec3 c = map.at(sample.time);
-  c -= (sample.darkness + sample.deadShade) * settings_.darkening;  // Sec. 4.3
-  if (sample.outline) c *= settings_.outlineShade;
+  c -= (sample.darkness + sample.deadShade) * settings_.knotDarkening;  // Sec. 4.3
+  if (sample.outline) c *= settings_.knotOutlineShade;
   return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 
@@ -264,7 +250,7 @@ void KnotField::cull(const glm::vec3& lo, const glm::vec3& hi, std::span<const i
   const float fx = std::max(std::abs(qLo.x), std::abs(qHi.x)),
               fy = std::max(std::abs(qLo.y), std::abs(qHi.y));
   const float dMax = std::sqrt(fx * fx + fy * fy);
-  const float reach = settings_.reachEnd * dMax;  // no knot term survives d_b >= reach_end x d_s
+  const float reach = settings_.knotReachEnd * dMax;  // no knot term survives d_b >= reach_end x d_s
   // Azimuths the box covers: an interval around its centre's azimuth (all of them if it holds the pith).
   float thetaCentre = 0.0f, thetaHalf = kPi;
   if (dMin > 0.0f) {

@@ -24,17 +24,22 @@
 
 namespace kerf {
 
-// The knot parameters of the schema (group "knots"), in the model's terms.
+// The knot parameters of the schema (group "knots", params/knot_parameters.def): one member per entry, with
+// the schema's name and default, generated from those lines.
 struct KnotSettings {
-  float speed = 0.16f, speedDecline = 0.06f, speedNoise = 0.25f;
-  float kStem = 1.5f, kKnot = 5.0f, kTransition = 0.3f;
-  float reachStart = 0.45f, reachEnd = 0.8f;
-  float deadInversion = -0.5f, deadTransition = 8.0f, deadSharpening = 5.0f, butterfly = 0.6f;
-  glm::vec3 darkening{0.17f, 0.18f, 0.15f};
-  float edgeSoftness = 0.15f, deadDarkening = 0.6f;
-  float outlineWidth = 0.012f, outlineShade = 0.6f, outlineNoise = 0.6f;
+#define V1(a) float(a)
+#define V3(a, b, c) glm::vec3(a, b, c)
+#define KERF_PARAM(name, id, group, label, unit, kind, def, ...) KERF_PARAM_TYPE_##kind name = def;
+#include "params/knot_parameters.def"
+#undef KERF_PARAM
+#undef V1
+#undef V3
 
   static KnotSettings fromParameters(const WoodParameters& params);
+  // Calls visit(spec, components) for every member, in schema order (spec: its ParamSpec; components:
+  // 1 or 3 floats), e.g. to upload them as the shaders' P.knot* uniforms.
+  template <typename Visit>
+  void forEachParameter(Visit&& visit) const;
 };
 
 // Eq. 2, the power smooth minimum of two non-negative times; exact min(a, b) when either is 0.
@@ -118,5 +123,12 @@ class KnotField {
   std::vector<int> allKnots_;
   std::vector<float> speedNoise_, outlineNoise_;
 };
+
+template <typename Visit>
+void KnotSettings::forEachParameter(Visit&& visit) const {
+#define KERF_PARAM(name, id, ...) visit(*findParameter(id), valueComponents(name));
+#include "params/knot_parameters.def"
+#undef KERF_PARAM
+}
 
 }  // namespace kerf

@@ -220,10 +220,10 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
                             std::array<double, 6>* pithOut) {
   const Stopwatch clock;
   BlockKnotFitResult out;
-  out.kStem = settings.kStem;
+  out.kStem = settings.knotSmoothStem;
   const PithAxis& pith = stem.axis();
-  const float maxSpeed = 0.9f * std::min(settings.reachStart, settings.reachEnd);
-  const float speed0 = std::clamp(settings.speed, kMinSpeed, maxSpeed);
+  const float maxSpeed = 0.9f * std::min(settings.knotReachStart, settings.knotReachEnd);
+  const float speed0 = std::clamp(settings.knotSpeed, kMinSpeed, maxSpeed);
 
   std::map<int, std::vector<KnotMark>> byId;
   for (const KnotMark& m : marks) byId[m.knot].push_back(m);
@@ -267,7 +267,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     stemRadius[i] = c.radius;
     for (int k = 0; k < static_cast<int>(initial.size()) && nearKnot[i] < 0; ++k) {
       const float d = knotAxisDistance(&initial[k].origin.x, &initial[k].direction.x, p);
-      if (d < options.nearReach * settings.reachEnd * c.radius) nearKnot[i] = k;
+      if (d < options.nearReach * settings.knotReachEnd * c.radius) nearKnot[i] = k;
     }
   }
   std::vector<int> nearCount(initial.size(), 0);
@@ -286,7 +286,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
                      b.direction.z,
                      std::log(static_cast<double>(b.speed))};
   }
-  double kStem = settings.kStem;
+  double kStem = settings.knotSmoothStem;
   const BlockKnots initialKnots(initial, settings, stem.ringWidth());
   std::vector<double> levels(contours.count(), 0.0);
   ceres::Problem problem;
@@ -401,7 +401,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     }
   }
   KnotSettings fittedSettings = settings;
-  fittedSettings.kStem = out.kStem;
+  fittedSettings.knotSmoothStem = out.kStem;
   const BlockKnots fittedKnots(fitted, fittedSettings, stem.ringWidth());
   std::vector<double> withInitial(n), withFitted(n);
   for (int i = 0; i < n; ++i) {

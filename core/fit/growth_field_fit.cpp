@@ -263,7 +263,7 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
       field.params.pithAzimuth = joint.azimuthDeg;
       const PithAxis knotAxis = PithAxis::fromAngles(joint.pith.origin, joint.tiltDeg, joint.azimuthDeg);
       KnotSettings fitted = settings;
-      fitted.kStem = joint.knots.kStem;
+      fitted.knotSmoothStem = joint.knots.kStem;
       if (anyImage) {
         // Ring width and phase along the merged field in mm (smin(r, d_k / v_k)): the dense rings of the
         // knot then fall on the same levels as the stem's instead of posing as extra rings.
@@ -316,7 +316,7 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     KnotSettings settings = KnotSettings::fromParameters(out.params);
     BlockKnotFitOptions knotOptions;
     knotOptions.start = chosen.knots;  // from the undeformed field
-    if (!chosen.knots.empty()) settings.kStem = chosen.knotSmoothStem;
+    if (!chosen.knots.empty()) settings.knotSmoothStem = chosen.knotSmoothStem;
     const BlockKnotFitResult knots = fitBlockKnots(contours, block, stem, input.knotMarks, settings,
                                                    knotOptions, progress.part(0.95, 0.97));
     out.knots = knots.knots;

@@ -13,15 +13,20 @@ using nlohmann::json;
 
 namespace {
 
-constexpr std::string_view kKeptIds[] = {
-    "growth.pith_origin", "growth.pith_tilt",    "growth.pith_azimuth",
-    "growth.ring_offset", "growth.eccentricity", "growth.eccentricity_direction",
-    "faces.tint_a",       "faces.tint_b",        "faces.tint_c",
-    "faces.tint_d",       "faces.tint_e",        "faces.tint_f",
-    "model.seed"};
+// The schema's ParamScope::Block parameters: they describe this block, not the species.
+const std::vector<std::string_view>& keptIds() {
+  static const std::vector<std::string_view> ids = [] {
+    std::vector<std::string_view> out;
+    for (const ParamSpec& spec : parameterSchema())
+      if (spec.scope == ParamScope::Block) out.push_back(spec.id);
+    return out;
+  }();
+  return ids;
+}
 
 bool isKept(std::string_view id) {
-  return std::find(std::begin(kKeptIds), std::end(kKeptIds), id) != std::end(kKeptIds);
+  const ParamSpec* spec = findParameter(id);
+  return spec && spec->scope == ParamScope::Block;
 }
 
 std::string readString(const json& in, const char* key, bool required) {
@@ -42,7 +47,7 @@ bool validId(const std::string& id) {
 }  // namespace
 
 std::span<const std::string_view> presetKeptParameterIds() {
-  return kKeptIds;
+  return keptIds();
 }
 
 WoodParameters Preset::parametersOnDefaults() const {
@@ -51,11 +56,11 @@ WoodParameters Preset::parametersOnDefaults() const {
 
 WoodParameters Preset::applyTo(const WoodParameters& base) const {
   WoodParameters out = parametersOnDefaults();
-  for (std::string_view id : kKeptIds) {
-    const auto index = parameterIndex(id);
-    if (!index) continue;
-    const auto from = base.components(*index);
-    std::copy(from.begin(), from.end(), out.components(*index).begin());
+  const auto schema = parameterSchema();
+  for (std::size_t i = 0; i < schema.size(); ++i) {
+    if (schema[i].scope != ParamScope::Block) continue;
+    const auto from = base.components(i);
+    std::copy(from.begin(), from.end(), out.components(i).begin());
   }
   validate(out);
   return out;

@@ -12,9 +12,9 @@
 // Applying a preset: the species' values are set on top of the schema defaults, but everything that
 // describes *this block* rather than the species is kept from the current parameters: where the pith
 // lies and how it leans (growth.pith_origin, pith_tilt, pith_azimuth), the ring phase and eccentric
-// growth (fitted or set for this log), the per-face photo tints, and the random seed. A preset may not
-// list those ids (presetFromJson refuses them), so choosing a species never moves the rings of a
-// fitted block.
+// growth (fitted or set for this log), the per-face photo tints, and the random seed: the schema's
+// ParamScope::Block parameters (wood_parameters.def). A preset may not list those ids (presetFromJson
+// refuses them), so choosing a species never moves the rings of a fitted block.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <span>
@@ -44,7 +44,8 @@ struct Preset {
   WoodParameters parametersOnDefaults() const;
 };
 
-// Ids of the parameters a preset keeps from the current parameters (and may not set).
+// Ids of the parameters a preset keeps from the current parameters (and may not set): the schema's
+// ParamScope::Block ones, in schema order.
 std::span<const std::string_view> presetKeptParameterIds();
 
 // Parses and checks one preset (format, version, fields, parameter ids and ranges). Throws InputError

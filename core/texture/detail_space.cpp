@@ -12,35 +12,9 @@ namespace {
 constexpr const char* kRayLightness = "rays.lightness";
 constexpr const char* kLatewoodContrast = "color.latewood_contrast";
 
-struct CoordinateChoice {
-  const char* id;
-  bool logScale;
-  float lo = 0, hi = 0;  // the range searched; 0, 0: the schema's slider range
-};
-// Sizes that may be 0 in the schema get a small positive floor on the log scale.
-constexpr float kLogFloor = 0.005f;
-
-constexpr CoordinateChoice kChoices[] = {
-    {"pores.radius_earlywood", true},
-    {"pores.radius_latewood", true},
-    {"pores.cell_size", true},
-    {"pores.density_earlywood", false},
-    {"pores.density_latewood", false},
-    // Pores darken through the latewood colour (Beer's law); where the fitted latewood is close to the
-    // earlywood they need more pigment than the slider offers, so the search reaches the hard limit.
-    {"pores.darkness", true, 0.2f, 20.0f},
-    {"pores.length", true},
-    {"rays.spacing", true},
-    {"rays.width", true},
-    {"rays.height", true},
-    {"rays.density", false},
-    {"rays.opacity", false},
+// The two coordinates that are not schema parameters (detail_space.hpp), searched after the schema's.
+const DetailCoordinate kDerived[] = {
     {kRayLightness, false, 0.6f, 1.4f},
-    {"fibers.strength", false},
-    {"fibers.width", true},
-    {"fibers.length", true},
-    {"rings.transition", false},
-    {"rings.latewood_fraction", false},
     {kLatewoodContrast, true, 0.5f, 1.1f},
 };
 
@@ -58,17 +32,12 @@ float luminanceOf(glm::vec3 c) {
 
 std::vector<DetailCoordinate> allDetailCoordinates() {
   std::vector<DetailCoordinate> out;
-  for (const CoordinateChoice& choice : kChoices) {
-    DetailCoordinate c{choice.id, choice.logScale};
-    if (choice.hi > choice.lo) {
-      c.lo = choice.lo, c.hi = choice.hi;
-    } else {
-      const ParamSpec* spec = findParameter(c.id);
-      c.lo = c.logScale ? std::max(spec->softMin, kLogFloor) : spec->softMin;
-      c.hi = spec->softMax;
-    }
-    out.push_back(c);
+  for (const ParamSpec& spec : parameterSchema()) {
+    if (!spec.search.searched) continue;
+    out.push_back(
+        {std::string(spec.id), spec.search.scale == ParamScale::Log, spec.search.lo, spec.search.hi});
   }
+  out.insert(out.end(), std::begin(kDerived), std::end(kDerived));
   return out;
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 // The detail parameters the texture inference searches (Mokume A.2.3: pores, rays, fibres and the
-// early-to-late transition), each mapped to a unit coordinate u in [0, 1] over its slider range: sizes on a
-// log scale (a pore twice as large is as far as one half as large), shares and strengths linearly.
-// Two coordinates are not schema parameters: "rays.lightness" sets the ray colour as a multiple of the
-// earlywood colour (rays are lighter or darker than the wood around them; one number instead of an RGB),
-// and "color.latewood_contrast" multiplies both latewood colours (heartwood and sapwood) of the parameters
-// it is decoded onto (it always encodes as 1): the colour fit alone may leave latewood almost as light as
-// earlywood when the rings do not line up to the pixel, and pores darken only through that contrast.
+// early-to-late transition): the schema's parameters with a search range (the `search` column of
+// params/wood_parameters.def), in schema order, each mapped to a unit coordinate u in [0, 1] over that
+// range: sizes on a log scale (a pore twice as large is as far as one half as large), shares and strengths
+// linearly. Two more coordinates, searched last, are not schema parameters: "rays.lightness" sets the ray
+// colour as a multiple of the earlywood colour (rays are lighter or darker than the wood around them; one
+// number instead of an RGB), and "color.latewood_contrast" multiplies both latewood colours (heartwood and
+// sapwood) of the parameters it is decoded onto (it always encodes as 1): the colour fit alone may leave
+// latewood almost as light as earlywood when the rings do not line up to the pixel, and pores darken only
+// through that contrast.
 #include <string>
 #include <vector>
 

@@ -15,6 +15,7 @@
 #include "fit/growth_field_fit.hpp"
 #include "fit/iso_contours.hpp"
 #include "rings/annotations.hpp"
+#include "schema_checks.hpp"
 
 using namespace kerf;
 
@@ -175,7 +176,7 @@ TEST(BlockKnotFit, TheWholeFitRecoversTheKnotAndBeatsTheFitWithoutIt) {
       "whole fit: knot axis %.3f deg, crossings off by %.3f / %.3f mm, speed %.4f (true %.2f), k_stem %.3f "
       "(true %.2f); pith %.3f deg off (without marks %.3f deg), ring width %.4f mm (without marks %.4f, "
       "true 3); near-knot iso-contour error %.4f ring spacings (without marks %.4f); knot stage %.3f s\n",
-      angle, offF, offA, k.speed, s.truth.speed, fit.params.knotSmoothStem, s.settings.kStem,
+      angle, offF, offA, k.speed, s.truth.speed, fit.params.knotSmoothStem, s.settings.knotSmoothStem,
       angleDeg(pith.direction, s.pith.direction), angleDeg(plainPith.direction, s.pith.direction),
       fit.params.ringWidth, plain.params.ringWidth, withKnot, withoutKnot, fit.report.knotSeconds);
   EXPECT_TRUE(e.optimized);
@@ -189,6 +190,7 @@ TEST(BlockKnotFit, TheWholeFitRecoversTheKnotAndBeatsTheFitWithoutIt) {
   EXPECT_LT(e.lossFitted, e.lossWithout);
   EXPECT_EQ(fit.params.knotSmoothStem, fit.report.knotSmoothStem);
   EXPECT_NO_THROW(validate(fit.params));
+  EXPECT_GT(test::expectOnlyFittedParametersChanged(WoodParameters{}, fit.params, FitBy::Rings), 1);
   const auto lines = formatGrowthFieldFitReport(fit.report);
   const auto has = [&](const std::string& start) {
     return std::any_of(lines.begin(), lines.end(),

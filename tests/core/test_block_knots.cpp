@@ -55,7 +55,7 @@ TEST(BlockKnots, FarFromTheKnotTheFieldIsTheStemFieldBitForBit) {
   for (const glm::vec3 p : blockPoints(4000)) {
     const Cylindrical c = s.pith.toCylindrical(p);
     const float d = knotAxisDistance(&s.knot.origin.x, &s.knot.direction.x, p);
-    if (d < s.settings.reachEnd * c.radius) continue;
+    if (d < s.settings.knotReachEnd * c.radius) continue;
     ++far;
     const BlockKnotSample k = s.knots.merge(p, s.stem.evaluate(c), c.radius);
     EXPECT_EQ(k.time, s.stem.evaluate(c));

@@ -15,6 +15,7 @@
 #include "io/project.hpp"
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"
+#include "schema_checks.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
@@ -43,6 +44,7 @@ TEST(ColourFit, RecoversTheColoursOfASyntheticBlock) {
   start.sapwoodLatewoodColor = {0.5f, 0.5f, 0.5f};
   start.faceTintB = start.faceTintE = glm::vec3(1.0f);
   const ColourFitResult fit = fitColours(truth.block, start, rates, photos);
+  EXPECT_GT(test::expectOnlyFittedParametersChanged(start, fit.params, FitBy::Colour), 4);
   std::printf("[colour] %d samples, %d iterations, %.2f s; L1 per face before/after:", fit.samples,
               fit.iterations, fit.seconds);
   for (int f = 0; f < 6; ++f) std::printf(" %.3f/%.3f", fit.l1Before[f], fit.l1After[f]);

@@ -15,6 +15,7 @@
 #include "fit/growth_field_fit.hpp"
 #include "io/image.hpp"
 #include "params/parameter_schema.hpp"
+#include "schema_checks.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
@@ -71,6 +72,7 @@ TEST(GrowthFieldFit, FitsRatesWithRingsAtWholeYears) {
   const GrowthFieldFitResult fit = fitGrowthFieldToSample(s.input, s.block, WoodParameters{});
   ASSERT_TRUE(fit.rates);
   EXPECT_NO_THROW(validate(fit.params));
+  EXPECT_GT(test::expectOnlyFittedParametersChanged(WoodParameters{}, fit.params, FitBy::Rings), 1);
   EXPECT_EQ(fit.params.ringOffset, 0.0f);
   EXPECT_TRUE(fit.report.distortionsFitted);
   EXPECT_GT(fit.report.ringsAlongFitted, 2);

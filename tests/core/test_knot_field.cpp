@@ -40,9 +40,9 @@ Knot straightKnot(float z, float azimuth, float death = std::numeric_limits<floa
 // Settings without noise or slow-down: knot speed = 0.2 x stem speed exactly.
 KnotSettings plainSettings() {
   KnotSettings s;
-  s.speed = 0.2f;
-  s.speedDecline = 0.0f;
-  s.speedNoise = 0.0f;
+  s.knotSpeed = 0.2f;
+  s.knotSpeedDecline = 0.0f;
+  s.knotSpeedNoise = 0.0f;
   return s;
 }
 
@@ -75,9 +75,9 @@ TEST(KnotSmoothMin, MatchesEquation2) {
 
 TEST(KnotSmoothMin, AdaptiveKBlendsBetweenStemAndKnot) {
   KnotSettings s;
-  s.kStem = 1.5f;
-  s.kKnot = 5.0f;
-  s.kTransition = 0.3f;
+  s.knotSmoothStem = 1.5f;
+  s.knotSmoothKnot = 5.0f;
+  s.knotSmoothTransition = 0.3f;
   EXPECT_FLOAT_EQ(adaptiveK(0.5f, 0.5f, s), 3.25f);     // t_delta = 0: the mean
   EXPECT_NEAR(adaptiveK(10.0f, 0.0f, s), 5.0f, 0.06f);  // deep inside the knot (t_s >> T_b)
   EXPECT_NEAR(adaptiveK(0.0f, 10.0f, s), 1.5f, 0.06f);  // far outside
@@ -85,17 +85,17 @@ TEST(KnotSmoothMin, AdaptiveKBlendsBetweenStemAndKnot) {
   for (float d = -2.0f; d <= 2.0f; d += 0.05f) {
     const float k = adaptiveK(1.0f + d, 1.0f, s);
     EXPECT_GT(k, last);
-    EXPECT_GT(k, s.kStem);
-    EXPECT_LT(k, s.kKnot);
+    EXPECT_GT(k, s.knotSmoothStem);
+    EXPECT_LT(k, s.knotSmoothKnot);
     last = k;
   }
 }
 
 TEST(KnotSmoothMin, DeadFactorInvertsWithButterflyWings) {
   KnotSettings s;
-  s.deadInversion = -0.5f;
-  s.deadTransition = 8.0f;
-  s.butterfly = 0.6f;
+  s.knotDeadInversion = -0.5f;
+  s.knotDeadTransition = 8.0f;
+  s.knotButterfly = 0.6f;
   EXPECT_FLOAT_EQ(deadKnotFactor(0.0f, 0.3f, s), 1.0f);  // continuous with the alive knot at death
   EXPECT_NEAR(deadKnotFactor(5.0f, kPi / 2, s), -0.5f * 1.6f, 1e-5f);   // above the knot: strong wing
   EXPECT_NEAR(deadKnotFactor(5.0f, -kPi / 2, s), -0.5f * 1.6f, 1e-5f);  // below
@@ -108,14 +108,14 @@ TEST(KnotSmoothMin, DeadFactorInvertsWithButterflyWings) {
     EXPECT_LT(f, last);
     last = f;
   }
-  s.butterfly = 0.0f;
+  s.knotButterfly = 0.0f;
   EXPECT_FLOAT_EQ(deadKnotFactor(0.4f, 0.0f, s), deadKnotFactor(0.4f, kPi / 2, s));
 }
 
 TEST(KnotSmoothMin, WindowHasCompactSupport) {
   KnotSettings s;
-  s.reachStart = 0.4f;
-  s.reachEnd = 0.8f;
+  s.knotReachStart = 0.4f;
+  s.knotReachEnd = 0.8f;
   EXPECT_EQ(knotWindow(0.0f, s), 1.0f);
   EXPECT_EQ(knotWindow(0.4f, s), 1.0f);
   EXPECT_NEAR(knotWindow(0.6f, s), 0.5f, 1e-6f);
@@ -172,7 +172,7 @@ TEST(KnotTimeField, DeadKnotStopsGrowingAndInvertsTheFillet) {
   // 15 mm above the knot at d = 50: alive T_b = 0.75, tau = 0.5 - 0.3 = 0.2, T_b' = 0.95 (Eq. 5).
   const KnotFieldSample p = field.evaluate({50.0f, 0.0f, 515.0f});
   const float tau = 0.2f, tb = 0.95f;
-  const float k = adaptiveK(0.5f, 0.75f, s) + s.deadSharpening * tau;
+  const float k = adaptiveK(0.5f, 0.75f, s) + s.knotDeadSharpening * tau;
   const float delta = deadKnotFactor(tau, kPi / 2, s) * smoothingAmount(0.5f, tb, k);
   EXPECT_NEAR(p.knotTime, tb, 1e-5f);
   EXPECT_NEAR(p.time, 0.5f + delta, 1e-6f);

@@ -4,6 +4,7 @@
 // docs/texture.md - plus determinism, cancellation and the errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stop_token>
@@ -11,6 +12,7 @@
 #include "demo/demo_block.hpp"
 
 #include "noise_images.hpp"
+#include "schema_checks.hpp"
 #include "texture/detail_space.hpp"
 #include "texture/texture_inference.hpp"
 #include "texture_fixture.hpp"
@@ -162,6 +164,26 @@ TEST(DetailSpace, EncodingRoundTrips) {
   for (const DetailCoordinate& c : coordinates)
     EXPECT_NEAR(detailValue(back, c), detailValue(params, c), 1e-3f * std::max(1.0f, detailValue(params, c)))
         << c.id;
+}
+
+// The search space comes from the schema's `search` column: each such parameter is a coordinate over its
+// range, and moving the coordinates changes only parameters the schema marks as texture-fitted.
+TEST(DetailSpace, ComesFromTheSchemaAndChangesOnlyTextureFittedParameters) {
+  const std::vector<DetailCoordinate> coordinates = allDetailCoordinates();
+  for (const ParamSpec& spec : parameterSchema()) {
+    const auto it = std::find_if(coordinates.begin(), coordinates.end(),
+                                 [&](const DetailCoordinate& c) { return c.id == spec.id; });
+    ASSERT_EQ(it != coordinates.end(), spec.search.searched) << spec.id;
+    if (it == coordinates.end()) continue;
+    EXPECT_EQ(it->lo, spec.search.lo) << spec.id;
+    EXPECT_EQ(it->hi, spec.search.hi) << spec.id;
+    EXPECT_EQ(it->logScale, spec.search.scale == ParamScale::Log) << spec.id;
+  }
+  const WoodParameters params = demoProject(7).params;
+  for (const double u : {0.0, 1.0}) {
+    const WoodParameters moved = decodeDetail(params, coordinates, std::vector<double>(coordinates.size(), u));
+    EXPECT_GT(test::expectOnlyFittedParametersChanged(params, moved, FitBy::Texture), 10) << "u = " << u;
+  }
 }
 
 // The whole search (every detail parameter, coarse grid, colour refit) from a start far from the truth.

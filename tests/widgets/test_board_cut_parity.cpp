@@ -92,7 +92,7 @@ class BoardCutParityTest : public QObject, kerf::testing::GlRendererFixture<GpuI
     Board board = defaultBoard(log);
     board.rotationDeg = {12.0f, 20.0f, 7.0f};
     KnotSettings settings;
-    settings.butterfly = 0.9f, settings.deadInversion = -0.8f, settings.outlineWidth = 0.02f;
+    settings.knotButterfly = 0.9f, settings.knotDeadInversion = -0.8f, settings.knotOutlineWidth = 0.02f;
     compare(log, woodColorMapFromParameters(WoodParameters{}, log.stem.maxRadius()), board,
             slantedCut(-60.0f, 50.0f, -3.0f), "board_cut_random5_rotated", settings);
   }

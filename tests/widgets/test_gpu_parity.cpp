@@ -1,15 +1,21 @@
 // CPU/GPU parity: the GLSL wood model (shaders/wood_model.glsl) and core's model must give the same
 // picture. Renders faces and a slanted cut both ways, offscreen, and compares them.
 #include <QGuiApplication>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
 #include <QtTest>
 #include <memory>
+#include <set>
+#include <string>
 
+#include <cctype>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
 #include "demo/demo_block.hpp"
 #include "gl/gpu_image_renderer.hpp"
+#include "gl/wood_program.hpp"
 #include "gl_renderer_fixture.hpp"
 #include "render/renderers.hpp"
 
@@ -89,6 +95,48 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
               QString("partial_azimuths_face_%1").arg(faceLetter(face)));
   }
 
+  // Every schema parameter marked GpuUse::Uniform is read by the linked shaders: an active uniform of the
+  // block program or of the board program (knots.glsl). A parameter marked for the GPU that no shader
+  // reads would be uploaded for nothing, and its slider would change nothing in the 3D view. Some drivers
+  // (Mesa's llvmpipe among them) report every member of a struct uniform as active once the struct is
+  // used, so the programs' source, without comments, must also read it.
+  void everyGpuParameterIsAnActiveUniform() {
+    std::set<std::string> active;
+    std::string code;
+    for (const WoodSource source : {WoodSource::Block, WoodSource::Board}) {
+      WoodProgram program("image_plane.vert", "image_plane.frag", source);
+      QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+      const GLuint id = program.program().programId();
+      GLint count = 0, longest = 0;
+      gl->glGetProgramiv(id, GL_ACTIVE_UNIFORMS, &count);
+      gl->glGetProgramiv(id, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+      QVERIFY(count > 0);
+      std::string name(static_cast<std::size_t>(longest) + 1, '\0');
+      for (GLint i = 0; i < count; ++i) {
+        GLsizei length = 0;
+        GLint size = 0;
+        GLenum type = 0;
+        gl->glGetActiveUniform(id, static_cast<GLuint>(i), longest + 1, &length, &size, &type, name.data());
+        active.insert(name.substr(0, static_cast<std::size_t>(length)));
+      }
+      code += withoutComments(WoodProgram::fragmentSource("image_plane.frag", source).toStdString());
+    }
+    int checked = 0;
+    for (const ParamSpec& spec : parameterSchema()) {
+      if (spec.gpu != GpuUse::Uniform) continue;
+      ++checked;
+      const std::string uniform = glslUniformName(spec);
+      QVERIFY2(active.count(uniform),
+               qPrintable(QString::fromStdString(uniform + " (" + std::string(spec.id) +
+                                                 ") is not an active uniform")));
+      QVERIFY2(
+          readsMember(code, uniform),
+          qPrintable(QString::fromStdString(uniform + " (" + std::string(spec.id) +
+                                            ") is marked Uniform in the schema but no shader reads it")));
+    }
+    QVERIFY(checked > 40);
+  }
+
   // Knots in the block (Mokume Sec. 5.2.4): two knots from the pith through the block, merged by the
   // smooth minimum and darkened, on faces and a cut.
   void blockKnots() {
@@ -114,6 +162,36 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
   }
 
  private:
+  // GLSL source without // and /* */ comments.
+  static std::string withoutComments(const std::string& source) {
+    std::string out;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+      if (source.compare(i, 2, "//") == 0) {
+        i = source.find('\n', i);
+        if (i == std::string::npos) break;
+      } else if (source.compare(i, 2, "/*") == 0) {
+        i = source.find("*/", i + 2);
+        if (i == std::string::npos) break;
+        ++i;
+        continue;
+      }
+      out += source[i];
+    }
+    return out;
+  }
+  // Whether `code` reads `member` ("P.ringWidth") as a whole word (not P.ringWidthMax).
+  static bool readsMember(const std::string& code, const std::string& member) {
+    for (std::size_t at = code.find(member); at != std::string::npos; at = code.find(member, at + 1)) {
+      const std::size_t end = at + member.size();
+      const bool wordStart =
+          at == 0 || !(std::isalnum(static_cast<unsigned char>(code[at - 1])) || code[at - 1] == '_');
+      const bool wordEnd =
+          end == code.size() || !(std::isalnum(static_cast<unsigned char>(code[end])) || code[end] == '_');
+      if (wordStart && wordEnd) return true;
+    }
+    return false;
+  }
+
   void compare(const Image& cpu, const Image& gpu, const QString& name) {
     QCOMPARE(gpu.width, cpu.width);
     QCOMPARE(gpu.height, cpu.height);

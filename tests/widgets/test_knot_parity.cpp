@@ -95,7 +95,7 @@ class KnotParityTest : public QObject, kerf::testing::GlRendererFixture<GpuBoard
     Board board = defaultBoard(log);
     board.rotationDeg = {12.0f, 20.0f, 7.0f};
     KnotSettings settings;
-    settings.butterfly = 0.9f, settings.deadInversion = -0.8f, settings.outlineWidth = 0.02f;
+    settings.knotButterfly = 0.9f, settings.knotDeadInversion = -0.8f, settings.knotOutlineWidth = 0.02f;
     compareBoard(log, colors, board, 200, "knots_random_rotated", settings, FaceId::C);
     const KnotField field(log, settings);
     BoardRenderOptions culled, all;

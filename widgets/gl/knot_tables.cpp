@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gl/gl_helpers.hpp"
+#include "gl/wood_program.hpp"
 
 namespace kerf {
 namespace {
@@ -141,25 +142,10 @@ void KnotTables::bind(QOpenGLShaderProgram& p, int firstUnit) const {
   p.setUniformValue("u_colorCount", colorCount_);
   p.setUniformValue("u_colorRowLength", kRowLength);
   p.setUniformValue("u_tileListRow", kRowLength);
-  const KnotSettings& s = settings_;
-  p.setUniformValue("P.knotSpeed", s.speed);
-  p.setUniformValue("P.knotSpeedDecline", s.speedDecline);
-  p.setUniformValue("P.knotSpeedNoise", s.speedNoise);
-  p.setUniformValue("P.knotSmoothStem", s.kStem);
-  p.setUniformValue("P.knotSmoothKnot", s.kKnot);
-  p.setUniformValue("P.knotSmoothTransition", s.kTransition);
-  p.setUniformValue("P.knotReachStart", s.reachStart);
-  p.setUniformValue("P.knotReachEnd", s.reachEnd);
-  p.setUniformValue("P.knotDeadInversion", s.deadInversion);
-  p.setUniformValue("P.knotDeadTransition", s.deadTransition);
-  p.setUniformValue("P.knotDeadSharpening", s.deadSharpening);
-  p.setUniformValue("P.knotButterfly", s.butterfly);
-  p.setUniformValue("P.knotDarkening", toQt(s.darkening));
-  p.setUniformValue("P.knotEdgeSoftness", s.edgeSoftness);
-  p.setUniformValue("P.knotDeadDarkening", s.deadDarkening);
-  p.setUniformValue("P.knotOutlineWidth", s.outlineWidth);
-  p.setUniformValue("P.knotOutlineShade", s.outlineShade);
-  p.setUniformValue("P.knotOutlineNoise", s.outlineNoise);
+  // The schema's knot parameters (P.knot*), from the field's settings rather than the document's.
+  settings_.forEachParameter([&p](const ParamSpec& spec, std::span<const float> value) {
+    WoodProgram::setParameter(p, spec, value);
+  });
 }
 
 }  // namespace kerf

@@ -50,16 +50,19 @@ WoodProgram::WoodProgram(const QString& vertexFile, const QString& fragmentFile,
 
 WoodProgram::~WoodProgram() = default;
 
+void WoodProgram::setParameter(QOpenGLShaderProgram& program, const ParamSpec& spec,
+                               std::span<const float> value) {
+  if (spec.gpu != GpuUse::Uniform) return;  // not declared in GLSL
+  const QByteArray name = QByteArray::fromStdString(glslUniformName(spec));
+  if (value.size() == 3)
+    program.setUniformValue(name.constData(), QVector3D(value[0], value[1], value[2]));
+  else
+    program.setUniformValue(name.constData(), value[0]);
+}
+
 void WoodProgram::setParameters(QOpenGLShaderProgram& program, const WoodParameters& params) {
   const auto schema = parameterSchema();
-  for (std::size_t i = 0; i < schema.size(); ++i) {
-    const QByteArray name = QByteArray::fromStdString(glslUniformName(schema[i]));
-    const auto values = params.components(i);
-    if (values.size() == 3)
-      program.setUniformValue(name.constData(), QVector3D(values[0], values[1], values[2]));
-    else
-      program.setUniformValue(name.constData(), values[0]);
-  }
+  for (std::size_t i = 0; i < schema.size(); ++i) setParameter(program, schema[i], params.components(i));
 }
 
 void WoodProgram::setModel(const WoodModel& model) {

@@ -6,6 +6,7 @@
 #include <QOpenGLTexture>
 #include <QString>
 #include <memory>
+#include <span>
 
 #include "render/wood_model.hpp"
 
@@ -38,9 +39,12 @@ class WoodProgram {
   // kernels/glsl_prelude.glsl and the schema's `uniform WoodParameters P`: what any program that reads
   // parameters puts after its #version line.
   static QString parameterDeclarations();
-  // Uploads every schema parameter to P.* of a bound program (members the program does not use are
-  // skipped by OpenGL).
+  // Uploads every GpuUse::Uniform schema parameter to P.* of a bound program (members the program does
+  // not use are skipped by OpenGL).
   static void setParameters(QOpenGLShaderProgram& program, const WoodParameters& params);
+  // Uploads one parameter's value (1 or 3 floats) to its uniform P.name; nothing for a CpuOnly one.
+  static void setParameter(QOpenGLShaderProgram& program, const ParamSpec& spec,
+                           std::span<const float> value);
 
  private:
   QOpenGLShaderProgram program_;
