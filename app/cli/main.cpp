@@ -7,7 +7,9 @@
 #include <new>
 
 #include "command.hpp"
+#include "io/output_guard.hpp"
 #include "number_option.hpp"
+#include "output_options.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -42,9 +44,12 @@ int main(int argc, char** argv) {
   }
   setWorkerThreads(threads);
 
+  // One command per run: an output that is one of its inputs is refused (io/output_guard.hpp).
+  refuseOutputsOverInputs(true);
   try {
     for (const cli::Command& command : commands) {
       if (!command.subcommand->parsed()) continue;
+      cli::checkOutputsAgainstInputs(*command.subcommand);
       command.run(context);
       context.printStats(command.subcommand->get_name());
     }

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "io/output_guard.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -46,6 +47,7 @@ std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::stri
   if (::stat(path.c_str(), &st) != 0)
     throw InputError("cannot open " + kind + " " + path.string() + ": " + std::strerror(errno));
   checkStat(st, path, kind, maxBytes);
+  rememberInputFile(path);  // an output of the same command must not replace it (io/output_guard.hpp)
   return static_cast<std::uintmax_t>(st.st_size);
 }
 
