@@ -19,20 +19,10 @@ std::string sizeText(std::uintmax_t bytes) {
   return buffer;
 }
 
-// What a non-regular file is, for the message.
-const char* typeName(mode_t mode) {
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISFIFO(mode)) return "a pipe (FIFO)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 void checkStat(const struct stat& st, const std::filesystem::path& path, const std::string& kind,
                std::uintmax_t maxBytes) {
   if (!S_ISREG(st.st_mode))
-    throw InputError("cannot read " + kind + " " + path.string() + ": it is " + typeName(st.st_mode) +
+    throw InputError("cannot read " + kind + " " + path.string() + ": it is " + fileTypeName(st.st_mode) +
                      ", not a regular file");
   if (static_cast<std::uintmax_t>(st.st_size) > maxBytes)
     throw InputError("cannot read " + kind + " " + path.string() + ": it is " +
@@ -41,6 +31,15 @@ void checkStat(const struct stat& st, const std::filesystem::path& path, const s
 }
 
 }  // namespace
+
+const char* fileTypeName(unsigned mode) {
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISFIFO(mode)) return "a pipe (FIFO)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
 
 std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes) {
   struct stat st {};

@@ -15,6 +15,9 @@ inline constexpr std::uintmax_t kMaxJsonFileBytes = 256ull << 20;
 inline constexpr std::uintmax_t kMaxImageFileBytes = 2ull << 30;
 inline constexpr std::uintmax_t kMaxMeshFileBytes = 1ull << 30;
 
+// What a file that is not a regular file is, for messages: "a pipe (FIFO)", "a character device", ...
+const char* fileTypeName(unsigned mode);
+
 // Throws InputError unless `path` is a regular file of at most `maxBytes`. `kind` names it ("photo").
 // Returns its size.
 std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes);

@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "io/input_file.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -15,15 +16,6 @@ namespace {
 std::atomic<bool> guardInputs{false};
 std::mutex inputsMutex;
 std::set<std::pair<dev_t, ino_t>> inputs;  // what this process read, by device and inode (hard links too)
-
-const char* kindOf(mode_t mode) {
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISFIFO(mode)) return "a pipe (FIFO)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
 
 }  // namespace
 
@@ -38,7 +30,7 @@ std::filesystem::path checkedOutputTarget(const std::filesystem::path& target) {
   struct stat st {};
   if (::stat(real.c_str(), &st) != 0) return real;  // a new file
   if (!S_ISREG(st.st_mode))
-    throw InputError("cannot write " + target.string() + ": it is " + kindOf(st.st_mode) +
+    throw InputError("cannot write " + target.string() + ": it is " + fileTypeName(st.st_mode) +
                      "; Kerf writes only regular files and does not replace anything else");
   if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
     throw InputError("cannot write " + target.string() +

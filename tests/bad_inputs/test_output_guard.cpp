@@ -143,15 +143,10 @@ TEST_F(OutputGuard, DetectOnAFullDiskLeavesNoPartialRingImages) {
   for (const char* face : {"A", "B", "C", "D", "E", "F"}) writePhoto(sample / (std::string(face) + "_col.png"), 64, 64);
   const fs::path out = dir_ / "rings";
   const std::string command = "trap \"\" XFSZ; ulimit -f 2; " + std::string(KERF_CLI) + " -q detect " +
-                              sample.string() + " --out " + out.string() + " 2>&1";
-  FILE* pipe = ::popen(("bash -c '" + command + "'").c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
-  const int status = ::pclose(pipe);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << output;
-  EXPECT_NE(output.find("cannot write"), std::string::npos) << output;
+                              sample.string() + " --out " + out.string();
+  const CliResult r = runShell(command);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("cannot write"), std::string::npos) << r.output;
   ASSERT_TRUE(fs::is_directory(out));
   EXPECT_TRUE(fs::is_empty(out)) << "detect left files: " << fs::directory_iterator(out)->path();
 }

@@ -3,6 +3,7 @@
 // each refusing with exit code 2 and a message naming the option or the file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -116,21 +117,42 @@ class CliNumbers : public ::testing::TestWithParam<CliCase> {};
 
 // One kerf-cli run per case (each its own ctest test: a run costs kerf-cli's start-up).
 TEST_P(CliNumbers, RefusedWithExitCode2NamingTheOption) {
-  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "validated_numbers" /
-                       ("case" + std::to_string(&GetParam() - kCliCases));
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = std::string(test->test_suite_name()) + "_" + test->name();
+  std::replace(name.begin(), name.end(), '/', '_');
+  const fs::path dir = fs::path(KERF_TEST_ARTIFACTS) / "validated_numbers" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   writePhoto(dir / "p.png", 8, 8);
+  saveProject(Project(), dir / "b.kerf");
   std::string arguments = GetParam().arguments;
   for (std::size_t at; (at = arguments.find("{dir}")) != std::string::npos;) arguments.replace(at, 5, dir.string());
   SCOPED_TRACE(arguments);
   const CliResult r = runCli(arguments);
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_TRUE(std::regex_search(r.output, std::regex(GetParam().expected))) << r.output;
-  EXPECT_FALSE(fs::exists(dir / "x.png") || fs::exists(dir / "x.kerf") || fs::exists(dir / "demo"));
+  EXPECT_FALSE(fs::exists(dir / "x.png") || fs::exists(dir / "x.kerf") || fs::exists(dir / "demo") ||
+               fs::exists(dir / "x"));
 }
 
 INSTANTIATE_TEST_SUITE_P(ValidatedNumbers, CliNumbers, ::testing::ValuesIn(kCliCases));
+
+// Counts and sizes computed from options, checked in double before anything is allocated (an int
+// overflowed before the size check, or the work exhausted memory).
+const CliCase kBudgetCases[] = {
+    {"render-panel random:1 --type clt --res 16 --out {dir}/x.png --lamella-width 1e-30",
+     "CLT: 1e-30 mm lamellas .* would make 6e\\+32 lamellas a layer"},
+    {"render-panel random:1 --type clt --res 16 --out {dir}/x.png --lamella-width 1e-6",
+     "would make 6e\\+08 lamellas a layer.*up to 10000"},
+    {"render-panel random:1 --type clt --res 16 --out {dir}/x.png --size 1e-30,600,90",
+     "CLT: the panel size 1e-30 x 600 x 90 mm is outside 0.01 .. 100000 mm"},
+    {"render-panel random:1 --type plywood --res 16 --out {dir}/x.png --size 600,1e-30,12",
+     "plywood: the panel size 600 x 1e-30 x 12 mm is outside"},
+    {"export {dir}/b.kerf --depth-stack A,1e-30,1 --out {dir}/x",
+     "the depth stack would have more than 10000 images \\(1 mm in steps of 1e-30 mm\\)"},
+};
+
+INSTANTIATE_TEST_SUITE_P(BudgetsBeforeAllocating, CliNumbers, ::testing::ValuesIn(kBudgetCases));
 
 // Numbers in files: the project, log and annotation readers.
 struct FileCase {
@@ -161,6 +183,9 @@ const FileCase kFileCases[] = {
      R"({"format": "kerf-project", "version": 1, "knots": [{"id": 4294967297, "origin": [0,0,0],
         "direction": [1,0,0], "speed": 1}]})",
      "knots\\[0\\].id: \"4294967297\" is outside"},
+    {"BlockOf1e-30Mm", R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [1e-30, 40, 40]}})",
+     "block size must be three positive lengths of at least 0.01 mm and at most 100000 mm, got 1e-30 x 40 "
+     "x 40"},
     {"VersionThatWraps", R"({"format": "kerf-project", "version": 4294967297})", "version: \"4294967297\" is outside"},
 };
 
