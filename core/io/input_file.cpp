@@ -44,7 +44,8 @@ const char* fileTypeName(unsigned mode) {
 std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0)
-    throw InputError("cannot open " + kind + " " + path.string() + ": " + std::strerror(errno));
+    throw InputError("cannot open " + kind + " " + path.string() + ": " +
+                     (errno == ENOENT ? "file not found" : std::strerror(errno)));
   checkStat(st, path, kind, maxBytes);
   rememberInputFile(path);  // an output of the same command must not replace it (io/output_guard.hpp)
   return static_cast<std::uintmax_t>(st.st_size);

@@ -13,6 +13,7 @@
 #include "bad_input_files.hpp"
 #include "io/log_data_import.hpp"
 #include "io/project.hpp"
+#include "rings/annotations.hpp"
 #include "run_cli.hpp"
 #include "util/number_list.hpp"
 #include "util/parse_number.hpp"
@@ -207,6 +208,29 @@ TEST(ValidatedNumbers, FileNumbersThatDoNotFitAreRefused) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("year: \"4294967299\" is outside"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace kerf::bad
+
+namespace kerf::bad {
+namespace {
+
+// A trace year that fits an int but not a Mokume ring image (pixel = year, 255 = background): 300 was
+// written as 254.
+TEST(ValidatedNumbers, TraceYearOutsideAMokumeImageIsRefusedOnExport) {
+  Annotations annotations;
+  RingTrace trace;
+  trace.face = FaceId::A;
+  trace.points = {{5.0f, 5.0f}, {20.0f, 20.0f}};
+  trace.year = 300;
+  annotations.traces.push_back(trace);
+  const std::string error =
+      errorOf([&] { ringImageFromTraces(annotations, FaceId::A, Block(glm::vec3(40.0f)), {64, 64}); });
+  EXPECT_NE(error.find("year 300 on face A does not fit a Mokume ring image (years 0 to 254)"), std::string::npos)
+      << error;
+  annotations.traces[0].year = 254;
+  EXPECT_EQ(errorOf([&] { ringImageFromTraces(annotations, FaceId::A, Block(glm::vec3(40.0f)), {64, 64}); }), "");
 }
 
 }  // namespace
