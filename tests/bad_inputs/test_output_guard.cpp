@@ -50,12 +50,15 @@ void writeMesh(const fs::path& path) {
   writeText(path, "v 0 0 0\nv 10 0 0\nv 0 10 0\nv 0 0 10\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
 }
 
-TEST_F(OutputGuard, OutputThatIsAnInputIsRefused) {
+TEST_F(OutputGuard, MeshAsItsOwnOutputIsRefused) {
   saveProject(Project(), dir_ / "block.kerf");
   writeMesh(dir_ / "m.obj");
   expectRefusedLeavingTheFolder("export " + (dir_ / "block.kerf").string() + " --mesh " + (dir_ / "m.obj").string() +
                                     " --out " + (dir_ / "m.obj").string(),
                                 "--out .*m.obj is also the input --mesh");
+}
+
+TEST_F(OutputGuard, PhotoAsItsOwnOutputIsRefused) {
   writePhoto(dir_ / "p.png", 16, 16);
   expectRefusedLeavingTheFolder("rectify " + (dir_ / "p.png").string() +
                                     " --corners 0,0,15,0,15,15,0,15 --size-mm 10,10 --out " + (dir_ / "p.png").string(),
