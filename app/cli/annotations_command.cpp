@@ -5,6 +5,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "rings/annotations.hpp"
@@ -28,11 +29,9 @@ Command addAnnotationsCommand(CLI::App& app) {
   command->add_option("--export-mokume", o->exportDir,
                       "Write <face>_ann.png (pixel = year, 255 = background) for faces with numbered traces "
                       "and <face>_knot.png (grey 200 = knot centre) for faces with knot marks into DIR");
-  command
-      ->add_option("--px-per-mm", o->pxPerMm,
+  cli::addPositive(command, "--px-per-mm", o->pxPerMm,
                    "Resolution of the exported images (default: the face photo's size, else 6.4 px/mm, "
-                   "Mokume's 256 px on 40 mm)")
-      ->check(CLI::PositiveNumber);
+                   "Mokume's 256 px on 40 mm)");
   return {command, [o](Context&) {
             const Project project = loadDocument(o->document);
             const Annotations& a = project.annotations;

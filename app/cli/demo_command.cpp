@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "demo/demo_block.hpp"
 
 namespace kerf::cli {
@@ -17,10 +18,9 @@ Command addDemoCommand(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   demo->add_option("--out", o->out, "Output folder (created if needed)")->required();
-  demo->add_option("--size", o->demo.facePixels, "Face image side in pixels (Mokume uses 256)")
-      ->check(CLI::Range(8, 8192));
-  demo->add_option("--seed", o->demo.seed, "Random seed of the demo wood");
-  demo->add_option("--samples", o->demo.samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
+  cli::addNumber(demo, "--size", o->demo.facePixels, "Face image side in pixels (Mokume uses 256)", 8, 8192);
+  cli::addNumber(demo, "--seed", o->demo.seed, "Random seed of the demo wood");
+  cli::addNumber(demo, "--samples", o->demo.samples, "Supersamples per pixel side", 1, 8);
   demo->add_flag("--no-photo-look", o->plain, "Write the plain rendering, without lighting and noise");
   demo->add_flag("--numbered-traces", o->demo.numberedTraces,
                  "Also write the true rings as numbered ring traces (A_ann.png .. F_ann.png, Mokume format)");

@@ -48,9 +48,22 @@ Command addDetectCommand(CLI::App& app) {
         if (!project.heldOutFaces.empty())
           std::printf("held out (the project's held_out_faces): %s, not detected\n",
                       project.heldOutFaces.letters().c_str());
-        createOutputFolder(o->out);
         std::array<Image, 6> photos;
         for (FaceId face : faces) photos[faceIndex(face)] = readImage(project.facePhotos[faceIndex(face)]);
+        createOutputFolder(o->out);
+        // All outputs go to a hidden staging folder first and are moved into --out together at the end:
+        // a full disk or a kill half-way must not leave a mix of new and old X_arl.png that a later fit
+        // would read as one detection (issue 21).
+        const fs::path staging = temporaryFileFor(fs::path(o->out) / "detect");
+        createOutputFolder(staging);
+        struct RemoveStaging {
+          fs::path path;
+          ~RemoveStaging() {
+            std::error_code ignored;
+            fs::remove_all(path, ignored);
+          }
+        } removeStaging{staging};
+        std::vector<std::string> written;
         const ClassicalRingDetector detector;
         const BlockRingDetection detection =
             detectBlockRings(photos, project.block, project.heldOutFaces, context.progress(), detector);
@@ -68,7 +81,8 @@ Command addDetectCommand(CLI::App& app) {
                          letter.c_str(), photoPath.filename().c_str(), photo.width, photo.height,
                          frame.widthMm, frame.heightMm);
           }
-          writeImage(fs::path(o->out) / (letter + "_arl.png"), rings.arl);
+          writeImage(staging / (letter + "_arl.png"), rings.arl);
+          written.push_back(letter + "_arl.png");
           nlohmann::json list = nlohmann::json::array();
           for (const FaceContour& c : rings.contours) {
             nlohmann::json points = nlohmann::json::array();
@@ -92,7 +106,10 @@ Command addDetectCommand(CLI::App& app) {
              "[x, y] = column, row of the ARL image; the pixel's centre is at Kerf image coordinates "
              "(x + 0.5, y + 0.5)"},
             {"faces", std::move(facesJson)}};
-        writeTextAtomically(fs::path(o->out) / "contours.json", document.dump() + "\n");
+        writeTextAtomically(staging / "contours.json", document.dump() + "\n");
+        written.push_back("contours.json");
+        // contours.json last: a reader that finds it finds the images of the same run.
+        for (const std::string& name : written) fs::rename(staging / name, fs::path(o->out) / name);
         std::printf("rings written to %s (%zu faces: <face>_arl.png, contours.json); contours per face: %s\n",
                     o->out.c_str(), faces.size(), detection.countsText().c_str());
       }};

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "export/export_job.hpp"
 #include "io/project.hpp"
 #include "util/error.hpp"
@@ -32,11 +33,9 @@ Command addExportCommand(CLI::App& app) {
   command->add_option("--face", o->face, "Image of face A..F");
   command->add_option("--plane", o->plane,
                       "Image of the cut px,py,pz,nx,ny,nz (a point and a normal, block mm)");
-  command
-      ->add_option("--px-per-mm", o->pxPerMm, "Image resolution; stored in the file as DPI and mm per pixel")
-      ->check(CLI::Range(0.01f, 400.0f));
-  command->add_option("--samples", o->samples, "Supersamples per pixel side (parts: per texel side)")
-      ->check(CLI::Range(1, 8));
+  cli::addNumber(command, "--px-per-mm", o->pxPerMm, "Image resolution; stored in the file as DPI and mm per pixel",
+                 0.01f, 400.0f);
+  cli::addNumber(command, "--samples", o->samples, "Supersamples per pixel side (parts: per texel side)", 1, 8);
   command->add_option("--layer", o->layer, "What a PNG holds: colour, growth (16-bit) or rings")
       ->check(CLI::IsMember({"colour", "color", "growth", "rings"}));
   command->add_flag("--no-layers", o->noLayers, "TIFF/EXR: colour only, without the growth and rings layers");
@@ -45,8 +44,7 @@ Command addExportCommand(CLI::App& app) {
       ->check(CLI::IsMember({"half", "float"}));
   command->add_option("--quantity", o->quantity, "Volume: growth (float years) or color (RGB)")
       ->check(CLI::IsMember({"growth", "color", "colour"}));
-  command->add_option("--res", o->resolution, "Volume: samples along the block's longest side")
-      ->check(CLI::Range(1, 4096));
+  cli::addNumber(command, "--res", o->resolution, "Volume: samples along the block's longest side", 1, 4096);
   command->add_option(
       "--depth-stack", o->depthStack,
       "FACE,STEP_MM,DEPTH_MM: the face after removing 0, STEP, .. DEPTH mm, as numbered PNGs");
@@ -57,13 +55,11 @@ Command addExportCommand(CLI::App& app) {
   command->add_option(
       "--rotate", o->rotate,
       "Part: rx,ry,rz degrees about the block's x, then y, then z axis (applied before --place)");
-  command->add_option("--scale", o->scale, "Part: uniform scale of the mesh (before turning)")
-      ->check(CLI::PositiveNumber);
+  cli::addPositive(command, "--scale", o->scale, "Part: uniform scale of the mesh (before turning)");
   command->add_flag(
       "--centre,--center", o->centre,
       "Part: centre the turned part's bounding box at --place (default 0,0,0: the block centre)");
-  command->add_option("--texture-res", o->textureRes, "Part: side of the square baked texture in px")
-      ->check(CLI::Range(16, 16384));
+  cli::addNumber(command, "--texture-res", o->textureRes, "Part: side of the square baked texture in px", 16, 16384);
   command->add_flag("--require-fit", o->requireFit,
                     "Part: fail when the part sticks out of the block (default: export and warn)");
   return {command, [o](Context& context) {

@@ -7,6 +7,7 @@
 #include "fit/growth_field_fit.hpp"
 #include "fit/held_out_faces.hpp"
 #include "hold_out_option.hpp"
+#include "number_option.hpp"
 #include "io/gray_image.hpp"
 #include "io/sample_folder.hpp"
 #include "params/builtin_presets.hpp"
@@ -29,10 +30,9 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
   command->add_flag("--ignore-traces", o.ignoreTraces,
                     "Fit the ring-localization images' contours only (detected from the photos where there "
                     "are none), not the sample's or project's ring traces");
-  command
-      ->add_option("--anatomy-weight", o.anatomyWeight,
-                   "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)")
-      ->check(CLI::Range(0.0, 100.0));
+  cli::addNumber(command, "--anatomy-weight", o.anatomyWeight,
+                 "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)", 0.0,
+                 100.0);
   command->add_option(
       "--species", o.species,
       "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri "

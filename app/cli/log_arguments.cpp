@@ -5,6 +5,8 @@
 
 #include "io/log_data_import.hpp"
 #include "util/error.hpp"
+#include "util/number_list.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf::cli {
 
@@ -13,11 +15,7 @@ LogModel loadLogArgument(const std::string& text) {
   const std::string prefix = "random:";
   if (text.rfind(prefix, 0) == 0) {
     RandomLogOptions options;
-    try {
-      options.seed = static_cast<std::uint32_t>(std::stoul(text.substr(prefix.size())));
-    } catch (const std::exception&) {
-      throw InputError("LOG random:SEED needs a whole number seed, got \"" + text + "\"");
-    }
+    options.seed = parseNumber<std::uint32_t>(text.substr(prefix.size()), "LOG random:SEED");
     return generateRandomLog(options);
   }
   return loadLog(text);
@@ -28,19 +26,18 @@ void applySetting(WoodParameters& params, const std::string& setting) {
   const std::string id = setting.substr(0, eq);
   const auto index = parameterIndex(id);
   if (eq == std::string::npos || !index) {
-    throw InputError("--set takes id=value with a parameter id of `kerf-cli params`, got \"" + setting +
-                     "\"");
+    throw InputError("--set takes id=value with a parameter id of `kerf-cli params`, got " +
+                     quoteForMessage(setting));
   }
   const auto values = params.components(*index);
-  std::string rest = setting.substr(eq + 1);
+  const std::string what = "--set " + id;
+  const std::vector<float> numbers = parseNumberList(setting.substr(eq + 1), what);
+  if (numbers.size() != values.size())
+    throw InputError(what + " needs " + std::to_string(values.size()) + " number(s), got " +
+                     std::to_string(numbers.size()));
+  const bool integer = parameterSchema()[*index].kind == ParamKind::Integer;
   for (std::size_t c = 0; c < values.size(); ++c) {
-    const auto comma = rest.find(',');
-    try {
-      values[c] = std::stof(rest.substr(0, comma));
-    } catch (const std::exception&) {
-      throw InputError("--set " + id + " needs " + std::to_string(values.size()) + " number(s)");
-    }
-    rest = comma == std::string::npos ? std::string() : rest.substr(comma + 1);
+    values[c] = integer ? static_cast<float>(checkedNumber<int>(numbers[c], what)) : numbers[c];
   }
   validate(params);
 }

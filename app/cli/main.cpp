@@ -7,6 +7,9 @@
 #include <new>
 
 #include "command.hpp"
+#include "io/output_guard.hpp"
+#include "number_option.hpp"
+#include "output_options.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -18,7 +21,7 @@ int main(int argc, char** argv) {
   cli::Context context;
   int threads = 0;
   app.add_flag("--stats", context.stats, "Print wall time, threads, throughput and peak memory on stderr");
-  app.add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 256));
+  cli::addNumber(&app, "--threads", threads, "Worker threads (0 = all cores)", 0, 256);
   app.add_flag("-q,--quiet", context.quiet, "No progress output");
 
   const std::vector<cli::Command> commands = {
@@ -30,15 +33,23 @@ int main(int argc, char** argv) {
   };
 
   try {
+    cli::requireCheckedNumbers(app);  // a numeric option added without the number check is a bug
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every mistake on the command line is bad input: exit code 2.
+    return app.exit(e) == 0 ? 0 : 2;
+  } catch (const std::logic_error& e) {
+    std::fprintf(stderr, "kerf-cli: internal error: %s\n", e.what());
+    return 3;
   }
   setWorkerThreads(threads);
 
+  // One command per run: an output that is one of its inputs is refused (io/output_guard.hpp).
+  refuseOutputsOverInputs(true);
   try {
     for (const cli::Command& command : commands) {
       if (!command.subcommand->parsed()) continue;
+      cli::checkOutputsAgainstInputs(*command.subcommand);
       command.run(context);
       context.printStats(command.subcommand->get_name());
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/face_photo_rectify.hpp"
 #include "io/image.hpp"
@@ -49,10 +50,12 @@ Command addRectifyCommand(CLI::App& app) {
       ->required();
   rectify->add_option("--size-mm", o->sizeMm, "W,H: the face's width and height in mm (in the face image)")
       ->required();
-  rectify->add_option("--px-per-mm", o->pxPerMm,
-                      "Face image resolution (default: what the photo gives along the face's sides, at "
-                      "most 20)");
-  rectify->add_option("--rotate", o->rotate, "Quarter turn clockwise after rectifying: 0, 90, 180 or 270")
+  cli::addNumber(rectify, "--px-per-mm", o->pxPerMm,
+                 "Face image resolution (default: what the photo gives along the face's sides, at "
+                 "most 20)",
+                 0.0f, 200.0f);
+  cli::addNumber(rectify, "--rotate", o->rotate, "Quarter turn clockwise after rectifying: 0, 90, 180 or 270", 0,
+                 270)
       ->check(CLI::IsMember({0, 90, 180, 270}));
   rectify->add_flag("--flip", o->flip, "Mirror left <-> right after the turn");
   rectify->add_option("--white-balance", o->whiteBalance,

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "field/knot_field.hpp"
 #include "io/atomic_file.hpp"
 #include "io/log_data_import.hpp"
@@ -33,20 +34,18 @@ Command addRenderBoardCommand(CLI::App& app) {
                   "A Kerf log file (.kerflog), a Gran_1 folder (JSON files, else image maps), or random:SEED")
       ->required();
   cmd->add_option("--out", o->out, "Output image (PNG, ...)")->required();
-  cmd->add_option("--res", o->resolution, "Pixels along the face's longer side")->check(CLI::Range(1, 16384));
+  cli::addNumber(cmd, "--res", o->resolution, "Pixels along the face's longer side", 1, 16384);
   cmd->add_option(
       "--board", o->board,
       "cx,cy,cz,sx,sy,sz[,rx,ry,rz]: centre (log mm), width,length,thickness (mm), rotations (deg); "
       "default: a flat-sawn board through the knottiest section");
   cmd->add_option("--face", o->face, "Which face of the board: A..F (A, the default, looks at the pith)")
       ->check(CLI::IsMember({"A", "B", "C", "D", "E", "F", "a", "b", "c", "d", "e", "f"}));
-  cmd->add_option("--along-knot", o->alongKnot,
-                  "Instead of --board: face A along knot K's axis (radial plane)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--across-knot", o->acrossKnot, "Instead of --board: face A across knot K, facing the pith")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option(
-      "--distance", o->distance,
+  cli::addNumber(cmd, "--along-knot", o->alongKnot,
+                  "Instead of --board: face A along knot K's axis (radial plane)", 0);
+  cli::addNumber(cmd, "--across-knot", o->acrossKnot, "Instead of --board: face A across knot K, facing the pith", 0);
+  cli::addNumber(
+      cmd, "--distance", o->distance,
       "With --across-knot: distance of face A from the pith, mm (default: 25 mm past the knot's death, "
       "or 40 mm)");
   cmd->add_option("--set", o->settings, "Override a parameter: id=value (e.g. knots.butterfly=0.8)");

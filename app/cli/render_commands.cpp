@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "geometry/cut_plane.hpp"
 #include "io/atomic_file.hpp"
 #include "io/project.hpp"
@@ -35,9 +36,8 @@ Command addRenderFacesCommand(CLI::App& app) {
   auto o = std::make_shared<Options>();
   faces->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   faces->add_option("--out", o->out, "Output folder (created if needed)")->required();
-  faces->add_option("--px-per-mm", o->pxPerMm, "Resolution (6.4 = Mokume's 256 px per 40 mm)")
-      ->check(CLI::Range(0.01f, 400.0f));
-  faces->add_option("--samples", o->samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
+  cli::addNumber(faces, "--px-per-mm", o->pxPerMm, "Resolution (6.4 = Mokume's 256 px per 40 mm)", 0.01f, 400.0f);
+  cli::addNumber(faces, "--samples", o->samples, "Supersamples per pixel side", 1, 8);
   faces->add_flag("--unfolded", o->cross, "Also write unfolded.png: the faces in the Mokume cross layout");
   return {faces, [o](Context& context) {
             const Project project = loadDocument(o->document);
@@ -68,8 +68,8 @@ Command addRenderCutCommand(CLI::App& app) {
   cut->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   cut->add_option("--plane", o->plane, "px,py,pz,nx,ny,nz: a point on the plane and its normal, block mm")
       ->required();
-  cut->add_option("--px-per-mm", o->pxPerMm, "Resolution of the cut image")->check(CLI::Range(0.01f, 400.0f));
-  cut->add_option("--samples", o->samples, "Supersamples per pixel side")->check(CLI::Range(1, 8));
+  cli::addNumber(cut, "--px-per-mm", o->pxPerMm, "Resolution of the cut image", 0.01f, 400.0f);
+  cli::addNumber(cut, "--samples", o->samples, "Supersamples per pixel side", 1, 8);
   cut->add_option("--out", o->out, "Output image (.png, .tif, ...)")->required();
   return {cut, [o](Context& context) {
             const CutPlane plane = parsePlane(o->plane);

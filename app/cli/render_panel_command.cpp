@@ -4,6 +4,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "field/knot_field.hpp"
 #include "io/atomic_file.hpp"
 #include "log_arguments.hpp"
@@ -30,25 +31,20 @@ Command addRenderPanelCommand(CLI::App& app) {
       ->required()
       ->check(CLI::IsMember({"clt", "veneer", "plywood"}));
   cmd->add_option("--out", o->out, "Output image (PNG, ...)")->required();
-  cmd->add_option("--res", o->resolution, "Pixels along the image's longer side")
-      ->check(CLI::Range(1, 16384));
+  cli::addNumber(cmd, "--res", o->resolution, "Pixels along the image's longer side", 1, 16384);
   cmd->add_option("--face", o->face, "clt, plywood: which face of the panel, A..F (A: the top)")
       ->check(CLI::IsMember({"A", "B", "C", "D", "E", "F", "a", "b", "c", "d", "e", "f"}));
   cmd->add_option("--size", o->size,
                   "clt, plywood: width,length,thickness in mm (default 600,600,90 for clt, 600,600,12 for "
                   "plywood)");
-  cmd->add_option("--layers", o->layers, "clt: layers (default 3); plywood: plies (default 5)")
-      ->check(CLI::Range(1, 64));
-  cmd->add_option("--lamella-width", o->lamellaWidth, "clt: width of the lamellas (boards), mm")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", o->seed, "clt: where in the log the lamellas are cut (each seed another panel)");
-  cmd->add_option("--thickness", o->thickness,
-                  "veneer: the sheet's thickness (the knife's pitch per turn), mm")
-      ->check(CLI::PositiveNumber);
+  cli::addNumber(cmd, "--layers", o->layers, "clt: layers (default 3); plywood: plies (default 5)", 1, 64);
+  cli::addPositive(cmd, "--lamella-width", o->lamellaWidth, "clt: width of the lamellas (boards), mm");
+  cli::addNumber(cmd, "--seed", o->seed, "clt: where in the log the lamellas are cut (each seed another panel)");
+  cli::addPositive(cmd, "--thickness", o->thickness,
+                  "veneer: the sheet's thickness (the knife's pitch per turn), mm");
   cmd->add_option("--sheet", o->sheet, "veneer: length (along the peel),width (up the log) in mm");
-  cmd->add_option("--start", o->start, "veneer: where on the peel the sheet starts, mm from the first cut")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--height", o->height,
+  cli::addNumber(cmd, "--start", o->start, "veneer: where on the peel the sheet starts, mm from the first cut", 0);
+  cli::addNumber(cmd, "--height", o->height,
                   "veneer: log height of the sheet's lower edge, mm (default: the knottiest section)");
   cmd->add_option("--set", o->settings, "Override a parameter: id=value (e.g. knots.butterfly=0.8)");
   return {cmd, [o](Context& context) {

@@ -7,6 +7,7 @@
 
 #include <sstream>
 #include "command.hpp"
+#include "number_option.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "render/renderers.hpp"
@@ -92,21 +93,17 @@ Command addTextureCommand(CLI::App& app) {
   texture->add_option(
       "--photos", o->photos,
       "Folder with the face photos A_col.png .. F_col.png (or A.png ..); default: the project's");
-  texture->add_option("--seed", o->seed, "Where the compared crops lie (default 1)");
-  texture->add_option("--crops", o->crops, "Crops per face (default 2)")->check(CLI::Range(1, 16));
-  texture->add_option("--crop-size", o->cropSize, "Crop side in photo pixels (default 96)")
-      ->check(CLI::Range(16, 1024));
-  texture->add_option("--sweeps", o->sweeps, "Coordinate-search sweeps (default 8; 0 = coarse search only)")
-      ->check(CLI::Range(0, 100));
-  texture->add_option("--samples", o->samples, "Points per pixel side when rendering (default 2)")
-      ->check(CLI::Range(1, 4));
+  cli::addNumber(texture, "--seed", o->seed, "Where the compared crops lie (default 1)");
+  cli::addNumber(texture, "--crops", o->crops, "Crops per face (default 2)", 1, 16);
+  cli::addNumber(texture, "--crop-size", o->cropSize, "Crop side in photo pixels (default 96)", 16, 1024);
+  cli::addNumber(texture, "--sweeps", o->sweeps, "Coordinate-search sweeps (default 8; 0 = coarse search only)",
+                 0, 100);
+  cli::addNumber(texture, "--samples", o->samples, "Points per pixel side when rendering (default 2)", 1, 4);
   texture->add_option("--params", o->parameters,
                       "Comma-separated detail parameters to search (default: all; e.g. "
                       "pores.radius_earlywood,rays.spacing)");
-  texture
-      ->add_option("--ring-phases", o->ringPhases,
-                   "Also compare the statistics per part of the ring, in N ring phases (default 0: off)")
-      ->check(CLI::Range(0, 8));
+  cli::addNumber(texture, "--ring-phases", o->ringPhases,
+                   "Also compare the statistics per part of the ring, in N ring phases (default 0: off)", 0, 8);
   texture->add_flag("--no-coarse", o->noCoarse, "Skip the coarse size grid");
   texture->add_flag("--keep-colours", o->keepColours, "Do not refit the colours after the detail");
   texture->add_option("--compare", o->compare,

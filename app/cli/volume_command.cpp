@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "number_option.hpp"
 #include "io/project.hpp"
 #include "render/volume_export.hpp"
 
@@ -18,8 +19,7 @@ Command addExportVolumeCommand(CLI::App& app) {
   volume->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   volume->add_option("--quantity", o->quantity, "growth (float years) or color (uint8 RGB)")
       ->check(CLI::IsMember({"growth", "color"}));
-  volume->add_option("--res", o->resolution, "Samples along the block's longest side")
-      ->check(CLI::Range(1, 4096));
+  cli::addNumber(volume, "--res", o->resolution, "Samples along the block's longest side", 1, 4096);
   volume->add_option("--out", o->out, "Output .nrrd or .vdb file")->required();
   return {volume, [o](Context& context) {
             const Project project = loadDocument(o->document);

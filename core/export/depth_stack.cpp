@@ -84,8 +84,15 @@ DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOption
   if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder))
     throw InputError("cannot write the depth stack into " + folder.string() + ": it is a file, not a folder");
   DepthStackResult result;
-  const int count = static_cast<int>(std::floor(options.depthMm / options.stepMm + 1e-4f)) + 1;
-  if (count > 10000) throw InputError("the depth stack would have more than 10000 images; raise the step");
+  // In double, checked before the conversion: 1 / 1e-30 does not fit an int (issue 21).
+  const double images = std::floor(double(options.depthMm) / options.stepMm + 1e-4) + 1.0;
+  if (!(images <= 10000.0)) {
+    std::ostringstream s;
+    s << "the depth stack would have more than 10000 images (" << options.depthMm << " mm in steps of "
+      << options.stepMm << " mm); raise the step";
+    throw InputError(s.str());
+  }
+  const int count = static_cast<int>(images);
   for (int i = 0; i < count; ++i) result.depthsMm.push_back(i * options.stepMm);
   // Check the deepest surface before writing anything.
   const float thickness = thicknessBehind(model.block(), options.face);

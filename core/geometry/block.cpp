@@ -1,6 +1,7 @@
 #include "geometry/block.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -37,12 +38,21 @@ CrossSlot crossSlot(FaceId face) {
   return {1, 1};
 }
 
+namespace {
+constexpr float kMinBlockSideMm = 0.01f;
+}  // namespace
+
 Block::Block(glm::vec3 sizeMm) : size_(sizeMm) {
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(size_[i]) || size_[i] <= 0.0f || size_[i] > kMaxBlockSideMm) {
-      throw InputError("block size must be three positive lengths of at most 100000 mm, got " +
-                       std::to_string(size_.x) + " x " + std::to_string(size_.y) + " x " +
-                       std::to_string(size_.z));
+    // Below 0.01 mm a face image has no pixel at any resolution Kerf makes (a 1e-30 mm block made
+    // OpenCV assert); above 100 m pixel counts overflow.
+    if (!std::isfinite(size_[i]) || size_[i] < kMinBlockSideMm || size_[i] > kMaxBlockSideMm) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "block size must be three positive lengths of at least 0.01 mm and at most 100000 mm, "
+                    "got %g x %g x %g",
+                    size_.x, size_.y, size_.z);
+      throw InputError(text);
     }
   }
 }

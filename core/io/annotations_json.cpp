@@ -5,7 +5,9 @@
 #include <glm/common.hpp>
 #include <nlohmann/json.hpp>
 
+#include "io/json_file.hpp"
 #include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 using nlohmann::json;
@@ -20,9 +22,9 @@ std::string faceName(FaceId face) {
 
 FaceId readFace(const json& value, const std::string& what) {
   if (!value.is_string() || value.get<std::string>().size() != 1)
-    throw InputError(what + " must be a face letter \"A\"..\"F\", got " + value.dump());
+    throw InputError(what + " must be a face letter \"A\"..\"F\", got " + describeJson(value));
   const auto face = faceFromLetter(value.get<std::string>()[0]);
-  if (!face) throw InputError(what + " must be a face letter \"A\"..\"F\", got " + value.dump());
+  if (!face) throw InputError(what + " must be a face letter \"A\"..\"F\", got " + describeJson(value));
   return *face;
 }
 
@@ -34,9 +36,9 @@ std::string number(float v) {
 
 glm::vec2 readPoint(const json& value, const std::string& what, const Block& block, FaceId face) {
   if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
-    throw InputError(what + " must be [u, v] in mm, got " + value.dump());
-  const glm::vec2 p(value[0].get<double>(), value[1].get<double>());
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InputError(what + " is not a finite point");
+    throw InputError(what + " must be [u, v] in mm, got " + describeJson(value));
+  const glm::vec2 p(checkedNumber<float>(value[0].get<double>(), what),
+                    checkedNumber<float>(value[1].get<double>(), what));
   // Points a little outside are kept (the block may have been resized after tracing); points far
   // outside (e.g. pixels written where mm are expected) are refused.
   const glm::vec2 size = faceSizeMm(block, face);
@@ -71,7 +73,7 @@ json annotationsToJson(const Annotations& annotations) {
 Annotations annotationsFromJson(const json& in, const Block& block) {
   if (!in.is_object()) throw InputError("\"annotations\" must be an object with \"traces\" and \"knots\"");
   if (in.contains("units") && in["units"] != "face_mm")
-    throw InputError("annotations.units must be \"face_mm\", got " + in["units"].dump());
+    throw InputError("annotations.units must be \"face_mm\", got " + describeJson(in["units"]));
   for (const auto& [key, value] : in.items())
     if (key != "units" && key != "traces" && key != "knots")
       throw InputError("unknown key annotations." + key + " (expected traces, knots, units)");
@@ -95,8 +97,8 @@ Annotations annotationsFromJson(const json& in, const Block& block) {
             readPoint(points[k], what + ".points[" + std::to_string(k) + "]", block, trace.face));
       if (t.contains("year") && !t["year"].is_null()) {
         if (!t["year"].is_number_integer())
-          throw InputError(what + ".year must be a whole number, got " + t["year"].dump());
-        trace.year = t["year"].get<int>();
+          throw InputError(what + ".year must be a whole number, got " + describeJson(t["year"]));
+        trace.year = checkedNumber<int>(t["year"].get<double>(), what + ".year");
       }
       if (t.contains("origin")) {
         const json& origin = t["origin"];
@@ -105,7 +107,7 @@ Annotations annotationsFromJson(const json& in, const Block& block) {
         else if (origin == "drawn")
           trace.origin = TraceOrigin::Drawn;
         else
-          throw InputError(what + ".origin must be \"drawn\" or \"detected\", got " + origin.dump());
+          throw InputError(what + ".origin must be \"drawn\" or \"detected\", got " + describeJson(origin));
       }
       out.traces.push_back(std::move(trace));
     }
@@ -120,9 +122,9 @@ Annotations annotationsFromJson(const json& in, const Block& block) {
         throw InputError(what + " must be {\"knot\": id, \"face\": \"A\", \"point\": [u, v]}");
       KnotMark mark;
       if (k.contains("knot")) {
-        if (!k["knot"].is_number_integer() || k["knot"].get<long long>() < 0)
-          throw InputError(what + ".knot must be a whole number >= 0, got " + k["knot"].dump());
-        mark.knot = k["knot"].get<int>();
+        if (!k["knot"].is_number_integer() || k["knot"].get<double>() < 0)
+          throw InputError(what + ".knot must be a whole number >= 0, got " + describeJson(k["knot"]));
+        mark.knot = checkedNumber<int>(k["knot"].get<double>(), what + ".knot", 0);
       }
       mark.face = readFace(k["face"], what + ".face");
       mark.point = readPoint(k["point"], what + ".point", block, mark.face);

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "io/output_guard.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -47,8 +48,9 @@ void removeStaleTemporaries(const std::filesystem::path& folder, const std::file
 
 }  // namespace
 
-std::filesystem::path temporaryFileFor(const std::filesystem::path& target) {
+std::filesystem::path temporaryFileFor(const std::filesystem::path& requested) {
   static std::atomic<unsigned> counter{0};
+  const std::filesystem::path target = checkedOutputTarget(requested);
   const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
   if (!std::filesystem::is_directory(folder)) {
     throw InputError("cannot write " + target.string() + ": folder " + folder.string() + " does not exist");
@@ -61,14 +63,20 @@ std::filesystem::path temporaryFileFor(const std::filesystem::path& target) {
                    target.extension().string());
 }
 
+void replaceWithTemporary(const std::filesystem::path& temporary, const std::filesystem::path& target) {
+  const std::filesystem::path real = checkedOutputTarget(target);  // again: a link's file, not the link
+  keepPermissions(real, temporary);
+  std::error_code error;
+  std::filesystem::rename(temporary, real, error);
+  if (error) throw InputError("cannot replace " + target.string() + ": " + error.message());
+}
+
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& write) {
   const std::filesystem::path temporary = temporaryFileFor(target);
   try {
     write(temporary);
-    std::error_code error;
-    std::filesystem::rename(temporary, target, error);
-    if (error) throw InputError("cannot replace " + target.string() + ": " + error.message());
+    replaceWithTemporary(temporary, target);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);

@@ -15,8 +15,12 @@ void writeFileAtomically(const std::filesystem::path& target,
 
 // The temporary file writeFileAtomically uses, for writers that stream into it themselves and rename it
 // when done (NRRD volumes); removes a killed writer's leftover of the same target first. Throws InputError
-// when the target's folder does not exist.
+// when the target's folder does not exist, or the output guard (io/output_guard.hpp) refuses it.
 std::filesystem::path temporaryFileFor(const std::filesystem::path& target);
+
+// Renames a finished temporary over `target` (through a symbolic link to its file), keeping the
+// existing file's permission bits. The output guard (io/output_guard.hpp) is checked again first.
+void replaceWithTemporary(const std::filesystem::path& temporary, const std::filesystem::path& target);
 
 // Creates an output folder and its parents if needed. Throws InputError "cannot create the folder X: why".
 void createOutputFolder(const std::filesystem::path& folder);

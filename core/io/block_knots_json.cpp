@@ -2,7 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
+
+#include "io/json_file.hpp"
 #include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 
@@ -13,8 +16,9 @@ namespace {
 glm::vec3 readVec3(const json& value, const std::string& what) {
   if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
       !value[2].is_number())
-    throw InputError(what + " must be [x, y, z] in mm, got " + value.dump());
-  return {value[0].get<float>(), value[1].get<float>(), value[2].get<float>()};
+    throw InputError(what + " must be [x, y, z] in mm, got " + describeJson(value));
+  return {checkedNumber<float>(value[0].get<double>(), what), checkedNumber<float>(value[1].get<double>(), what),
+          checkedNumber<float>(value[2].get<double>(), what)};
 }
 
 }  // namespace
@@ -30,12 +34,12 @@ json blockKnotsToJson(const std::vector<BlockKnot>& knots) {
 }
 
 std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
-  if (!in.is_array()) throw InputError("knots must be a list of knots, got " + in.dump());
+  if (!in.is_array()) throw InputError("knots must be a list of knots, got " + describeJson(in));
   std::vector<BlockKnot> knots;
   for (std::size_t i = 0; i < in.size(); ++i) {
     const std::string what = "knots[" + std::to_string(i) + "]";
     const json& entry = in[i];
-    if (!entry.is_object()) throw InputError(what + " must be an object, got " + entry.dump());
+    if (!entry.is_object()) throw InputError(what + " must be an object, got " + describeJson(entry));
     for (const auto& [key, value] : entry.items()) {
       if (key != "id" && key != "origin" && key != "direction" && key != "speed")
         throw InputError(what + " has an unknown key \"" + key +
@@ -44,12 +48,12 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
     for (const char* key : {"id", "origin", "direction", "speed"})
       if (!entry.contains(key)) throw InputError(what + " lacks \"" + key + "\"");
     BlockKnot knot;
-    if (!entry["id"].is_number_integer()) throw InputError(what + ".id must be a whole number");
-    knot.id = entry["id"].get<int>();
+    if (!entry["id"].is_number()) throw InputError(what + ".id must be a whole number");
+    knot.id = checkedNumber<int>(entry["id"].get<double>(), what + ".id");
     knot.origin = readVec3(entry["origin"], what + ".origin");
     knot.direction = readVec3(entry["direction"], what + ".direction");
     if (!entry["speed"].is_number()) throw InputError(what + ".speed must be a number");
-    knot.speed = entry["speed"].get<float>();
+    knot.speed = checkedNumber<float>(entry["speed"].get<double>(), what + ".speed");
     validate(knot, what);
     knots.push_back(knot);
   }

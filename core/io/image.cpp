@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -15,6 +16,7 @@ namespace {
 
 std::unique_ptr<OIIO::ImageInput> openInput(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw InputError("image not found: " + path.string());
+  checkInputFile(path, "image", kMaxImageFileBytes);  // a FIFO or /dev/zero must not block or feed us
   // Kerf drops alpha, so it wants the colour as stored: without this hint OpenImageIO multiplies it by
   // alpha, and transparent parts of a PNG photo would read as black.
   OIIO::ImageSpec config;
@@ -67,6 +69,20 @@ Image readImage(const std::filesystem::path& path, bool keepChannels) {
   Image raw(spec.width, spec.height, spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.pixels.data())) {
     throw InputError("cannot decode image " + path.string() + ": " + in->geterror());
+  }
+  // Float TIFF and EXR photos can hold NaN or infinity; one such pixel spreads through every filter and
+  // fit that reads it (it crashed detect). Refused, naming how many, rather than guessed at.
+  std::size_t nonFinite = 0;
+  for (std::size_t p = 0; p < raw.pixels.size(); p += spec.nchannels)
+    for (int c = 0; c < spec.nchannels; ++c)
+      if (!std::isfinite(raw.pixels[p + c])) {
+        ++nonFinite;
+        break;
+      }
+  if (nonFinite > 0) {
+    throw InputError("image " + path.string() + " has " + std::to_string(nonFinite) +
+                     (nonFinite == 1 ? " pixel that is not a finite number" : " pixels that are not finite numbers") +
+                     " (NaN or infinity); save it again without them");
   }
   if (keepChannels || spec.nchannels == 3) return raw;
   Image rgb(spec.width, spec.height, 3);

@@ -10,7 +10,9 @@
 
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
+#include "io/json_file.hpp"
 #include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 
@@ -25,27 +27,20 @@ constexpr int kMapDistanceSamples = 32;  // knot maps: 32 columns over [0, rmax)
 constexpr const char* kLogFormat = "kerf-log";
 constexpr int kLogVersion = 1;
 
-json readJsonFile(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot open log file " + path.string());
-  try {
-    return json::parse(in);
-  } catch (const json::exception& e) {  // parse errors, and numbers too large for a double (1e999)
-    throw InputError("log file " + path.string() + " is not valid JSON: " + e.what());
-  }
+json readLogJson(const fs::path& path) {
+  return readJsonFile(path, "log file");
 }
 
 float number(const json& v, const std::string& what) {
   if (!v.is_number()) throw InputError(what + " must be a number");
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) throw InputError(what + " must be finite");
-  return static_cast<float>(d);
+  return checkedNumber<float>(v.get<double>(), what);
 }
 
 // A count (slices, azimuths, knots): a whole number in [lo, hi], checked before any conversion to int.
 int count(const json& v, const std::string& what, int lo, int hi) {
-  const float n = number(v, what);
-  if (!(n >= static_cast<float>(lo) && n <= static_cast<float>(hi)) || n != std::floor(n)) {
+  if (!v.is_number()) throw InputError(what + " must be a number");
+  const double n = v.get<double>();
+  if (!(n >= lo && n <= hi) || n != std::floor(n)) {
     throw InputError(what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
   }
   return static_cast<int>(n);
@@ -92,7 +87,7 @@ LogModel importGranJson(const fs::path& folder, const LogImportOptions& options)
   if (!fs::is_directory(folder)) throw InputError("log folder " + folder.string() + " does not exist");
   const fs::path pithPath = folder / "Gran_1_pith.json", radiiPath = folder / "Gran_1_radii.json",
                  knotsPath = folder / "Gran_1_knots.json";
-  const json pith = readJsonFile(pithPath), radii = readJsonFile(radiiPath), knots = readJsonFile(knotsPath);
+  const json pith = readLogJson(pithPath), radii = readLogJson(radiiPath), knots = readLogJson(knotsPath);
   LogModel log;
   log.name = folder.filename().string();
   Stem& stem = log.stem;
@@ -192,7 +187,7 @@ LogModel importGranJson(const fs::path& folder, const LogImportOptions& options)
 LogModel importGranMaps(const fs::path& folder) {
   if (!fs::is_directory(folder)) throw InputError("log folder " + folder.string() + " does not exist");
   const fs::path paramsPath = folder / "map_params.json";
-  const json params = readJsonFile(paramsPath);
+  const json params = readLogJson(paramsPath);
   array(params, paramsPath.string(), 4);
   const float rmin = number(params[0], paramsPath.string() + " rmin"),
               rmax = number(params[1], paramsPath.string() + " rmax"),
@@ -347,7 +342,7 @@ LogModel logFromJson(const json& in, const std::string& where) {
   }
   if (!in.contains("version") || !in["version"].is_number_integer())
     throw InputError(where + " has no format version");
-  const int version = in["version"].get<int>();
+  const int version = checkedNumber<int>(in["version"].get<double>(), "version");
   if (version > kLogVersion) {
     throw InputError(where + " was written by a newer Kerf (log format version " + std::to_string(version) +
                      "); this Kerf reads versions up to " + std::to_string(kLogVersion));
@@ -393,7 +388,7 @@ LogModel logFromJson(const json& in, const std::string& where) {
 }
 
 LogModel loadLogFile(const fs::path& path) {
-  return logFromJson(readJsonFile(path), "log file " + path.string());
+  return logFromJson(readLogJson(path), "log file " + path.string());
 }
 
 LogModel loadLog(const fs::path& path) {

@@ -93,10 +93,15 @@ void NrrdWriter::finish() {
   std::fclose(file_);
   file_ = nullptr;
   std::error_code error;
-  if (ok) std::filesystem::rename(temporary_, path_, error);
-  if (!ok || error) {
+  if (!ok) {
     std::filesystem::remove(temporary_, error);
     throw InputError("cannot write " + path_.string());
+  }
+  try {
+    replaceWithTemporary(temporary_, path_);  // the output guard, the link's file, the file's mode
+  } catch (...) {
+    std::filesystem::remove(temporary_, error);
+    throw;
   }
 }
 

@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "io/annotations_json.hpp"
 #include "io/atomic_file.hpp"
 #include "io/block_knots_json.hpp"
+#include "io/json_file.hpp"
 #include "io/sample_folder.hpp"
 #include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 namespace fs = std::filesystem;
@@ -22,15 +25,19 @@ const char* kVersionString = "0.1.0";
 
 // nlohmann stores NaN/inf as null; read numbers strictly so a null or a string is a clear error.
 float readNumber(const json& value, const std::string& what) {
-  if (!value.is_number()) throw InputError(what + " must be a number, got " + value.dump());
-  const double v = value.get<double>();
-  if (!std::isfinite(v)) throw InputError(what + " is not a finite number");
-  return static_cast<float>(v);
+  if (!value.is_number()) throw InputError(what + " must be a number, got " + describeJson(value));
+  return checkedNumber<float>(value.get<double>(), what);
+}
+
+// A grid size: a whole number that an int holds (2^32 + 8 must not wrap to 8, 8.9 not become 8).
+int readCount(const json& value, const std::string& what) {
+  if (!value.is_number()) throw InputError(what + " must be a whole number, got " + describeJson(value));
+  return checkedNumber<int>(value.get<double>(), what, 0, std::numeric_limits<int>::max());
 }
 
 glm::vec3 readVec3(const json& value, const std::string& what) {
   if (!value.is_array() || value.size() != 3)
-    throw InputError(what + " must be a list of 3 numbers, got " + value.dump());
+    throw InputError(what + " must be a list of 3 numbers, got " + describeJson(value));
   return {readNumber(value[0], what), readNumber(value[1], what), readNumber(value[2], what)};
 }
 
@@ -94,9 +101,9 @@ GrowthRates growthRatesFromJson(const json& in) {
   if (!in.is_object()) throw InputError("\"growth_rates\" must be an object");
   try {
     GrowthRates g;
-    g.heights = in.at("heights").get<int>();
-    g.azimuths = in.at("azimuths").get<int>();
-    g.radii = in.at("radii").get<int>();
+    g.heights = readCount(in.at("heights"), "growth_rates.heights");
+    g.azimuths = readCount(in.at("azimuths"), "growth_rates.azimuths");
+    g.radii = readCount(in.at("radii"), "growth_rates.radii");
     const json& hr = in.at("height_range_mm");
     const json& rr = in.at("radius_range_mm");
     if (!hr.is_array() || hr.size() != 2 || !rr.is_array() || rr.size() != 2) {
@@ -159,7 +166,7 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   if (!in.contains("version") || !in["version"].is_number_integer()) {
     throw InputError("the project has no format version");
   }
-  const int version = in["version"].get<int>();
+  const int version = checkedNumber<int>(in["version"].get<double>(), "version");
   if (version > kProjectFormatVersion) {
     throw InputError("the project was written by a newer Kerf (format version " + std::to_string(version) +
                      "); this Kerf reads format versions up to " + std::to_string(kProjectFormatVersion) +
@@ -221,17 +228,7 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
 }
 
 Project loadProject(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) throw InputError("cannot open project " + file.string() + ": file not found or unreadable");
-  json in;
-  try {
-    in = json::parse(stream);
-  } catch (const json::parse_error& e) {
-    throw InputError("project " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) +
-                     "): " + jsonProblem(e));
-  } catch (const json::exception& e) {  // e.g. a number too large for a double (1e999)
-    throw InputError("project " + file.string() + " is not valid JSON: " + jsonProblem(e));
-  }
+  const json in = readJsonFile(file, "project");
   try {
     return projectFromJson(in, fs::absolute(file).parent_path());
   } catch (const InputError& e) {

@@ -5,6 +5,7 @@
 
 #include "io/log_data_import.hpp"
 #include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 
@@ -23,8 +24,8 @@ glm::vec3 readVec3(const json& in, const char* key) {
   if (!v.is_array() || v.size() != 3) throw InputError(what + " must be [x, y, z]");
   glm::vec3 out;
   for (int i = 0; i < 3; ++i) {
-    if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) throw InputError(what + " must be numbers");
-    out[i] = v[i].get<float>();
+    if (!v[i].is_number()) throw InputError(what + " must be numbers");
+    out[i] = checkedNumber<float>(v[i].get<double>(), what);
   }
   return out;
 }

@@ -2,10 +2,13 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "io/image.hpp"
+#include "io/input_file.hpp"
+#include "io/json_file.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -58,12 +61,11 @@ bool sameProportions(glm::ivec2 size, glm::vec2 mm) {
 std::optional<glm::vec3> readSampleBlockSize(const fs::path& folder) {
   const fs::path file = folder / "block.json";
   if (!fs::exists(file)) return std::nullopt;
-  std::ifstream in(file);
   nlohmann::json json;
   try {
-    json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception&) {
-    throw InputError(file.string() + " is not valid JSON (expected {\"size_mm\": [x, y, z]})");
+    json = parseJsonText(readInputFile(file, "block size file", kMaxJsonFileBytes), file.string());
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (expected {\"size_mm\": [x, y, z]})");
   }
   const auto bad = [&] {
     return InputError(file.string() + ": \"size_mm\" must be three positive lengths in mm, [x, y, z]");
@@ -74,8 +76,9 @@ std::optional<glm::vec3> readSampleBlockSize(const fs::path& folder) {
   glm::vec3 size(0.0f);
   for (int i = 0; i < 3; ++i) {
     if (!json["size_mm"][i].is_number()) throw bad();
-    size[i] = json["size_mm"][i].get<float>();
-    if (!std::isfinite(size[i]) || size[i] <= 0) throw bad();
+    const double side = json["size_mm"][i].get<double>();
+    if (!std::isfinite(side) || side <= 0 || side > std::numeric_limits<float>::max()) throw bad();
+    size[i] = static_cast<float>(side);
   }
   return size;
 }

@@ -14,6 +14,7 @@
 
 #include "export/file_extension.hpp"
 #include "mesh/mesh_topology.hpp"
+#include "io/input_file.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -79,8 +80,8 @@ void appendNode(Mesh& out, const aiScene& scene, const aiNode& node, const glm::
 Mesh loadMesh(const std::filesystem::path& path) {
   const std::string name = path.string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError("cannot read mesh " + name + ": no such file");
+  if (!std::filesystem::exists(path, ec)) throw InputError("cannot read mesh " + name + ": no such file");
+  checkInputFile(path, "mesh", kMaxMeshFileBytes);  // regular files only: a FIFO must not block
   if (!isMeshExtension(lowerExtension(path)))
     throw InputError("cannot read mesh " + name + ": unknown format \"" + lowerExtension(path) +
                      "\" (use .obj, .stl or .ply)");

@@ -5,7 +5,9 @@
 #include <set>
 
 #include "io/project.hpp"
+#include "io/json_file.hpp"
 #include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 namespace fs = std::filesystem;
@@ -73,7 +75,7 @@ Preset presetFromJson(const json& in) {
   if (!in.contains("version") || !in["version"].is_number_integer()) {
     throw InputError("the preset has no format version");
   }
-  const int version = in["version"].get<int>();
+  const int version = checkedNumber<int>(in["version"].get<double>(), "version");
   if (version > kPresetFormatVersion) {
     throw InputError("the preset was written by a newer Kerf (format version " + std::to_string(version) +
                      "); this Kerf reads versions up to " + std::to_string(kPresetFormatVersion));
@@ -123,16 +125,7 @@ json presetToJson(const Preset& preset) {
 }
 
 Preset loadPreset(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) throw InputError("cannot open preset " + file.string() + ": file not found or unreadable");
-  json in;
-  try {
-    in = json::parse(stream);
-  } catch (const json::parse_error& e) {
-    throw InputError("preset " + file.string() + " is not valid JSON (byte " + std::to_string(e.byte) + ")");
-  } catch (const json::exception& e) {  // e.g. a number too large for a double (1e999)
-    throw InputError("preset " + file.string() + " is not valid JSON: " + e.what());
-  }
+  const json in = readJsonFile(file, "preset");
   Preset preset;
   try {
     preset = presetFromJson(in);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -15,6 +16,19 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 constexpr int kTile = 16;
+constexpr int kMaxLamellasPerLayer = 10000;  // 100 m of 10 mm boards
+constexpr float kMinPanelSideMm = 0.01f;      // a panel, layer or ply thinner than this is no panel
+
+// Every side from kMinPanelSideMm to kMaxBlockSideMm: a 1e-30 mm panel made a pixel count overflow.
+void checkPanelSize(glm::vec3 size, const char* what) {
+  for (int i = 0; i < 3; ++i)
+    if (!(size[i] >= kMinPanelSideMm && size[i] <= kMaxBlockSideMm)) {
+      char text[200];
+      std::snprintf(text, sizeof text, "%s: the panel size %g x %g x %g mm is outside %g .. %g mm a side", what,
+                    size.x, size.y, size.z, kMinPanelSideMm, kMaxBlockSideMm);
+      throw InputError(text);
+    }
+}
 
 // Renders an image whose pixel centres map to log points through `sample` (image position -> log point
 // and shade). Per 16 x 16 tile, only the knots that can reach the box around the tile's own log points are
@@ -137,6 +151,19 @@ CltPanel makeCltPanel(const LogModel& log, glm::vec3 size, int layers, float lam
                       std::uint32_t seed) {
   if (layers < 1 || !(lamellaWidth > 0.0f) || !(size.x > 0 && size.y > 0 && size.z > 0))
     throw InputError("CLT: at least 1 layer, a positive lamella width and a positive panel size");
+  checkPanelSize(size, "CLT");
+  // The lamella count in double, bounded before anything is allocated: a 1e-30 mm (or 1e-6 mm) lamella
+  // would ask for more boards than memory holds, and 1e30 does not fit an int (issue 21).
+  const double lamellasPerLayer = std::ceil(double(std::max(size.x, size.y)) / lamellaWidth);
+  if (!(lamellasPerLayer <= kMaxLamellasPerLayer) || !(size.z / layers >= kMinPanelSideMm)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "CLT: %g mm lamellas in a %g x %g mm panel of %d layers would make %.3g lamellas a layer, "
+                  "%g mm thick; Kerf makes up to %d lamellas a layer, at least %g mm thick",
+                  lamellaWidth, size.x, size.y, layers, lamellasPerLayer, size.z / layers, kMaxLamellasPerLayer,
+                  kMinPanelSideMm);
+    throw InputError(text);
+  }
   CltPanel panel;
   panel.size = size;
   panel.layers = layers;
@@ -194,6 +221,7 @@ PanelSample PlywoodPanel::map(const glm::vec3& p, float glueMm) const {
 PlywoodPanel makePlywoodPanel(const LogModel& log, glm::vec3 size, int plies) {
   if (plies < 1 || !(size.x > 0 && size.y > 0 && size.z > 0))
     throw InputError("plywood: at least 1 ply and a positive panel size");
+  checkPanelSize(size, "plywood");
   PlywoodPanel panel;
   panel.size = size;
   panel.plies = plies;

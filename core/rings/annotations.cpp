@@ -464,7 +464,13 @@ GrayImage8 ringImageFromTraces(const Annotations& annotations, FaceId face, cons
       pts.emplace_back(static_cast<int>(std::lround(p.x * (1 << kShift))),
                        static_cast<int>(std::lround(p.y * (1 << kShift))));
     }
-    const int year = std::clamp(*trace.year, 0, 254);
+    // Pixel value = year, 255 = background: a year outside 0..254 cannot be written, and clamping it
+    // silently (300 became 254) writes a wrong ring (issue 21).
+    if (*trace.year < 0 || *trace.year > 254)
+      throw InputError("the ring trace of year " + std::to_string(*trace.year) + " on face " +
+                       std::string(1, faceLetter(face)) +
+                       " does not fit a Mokume ring image (years 0 to 254); renumber the traces first");
+    const int year = *trace.year;
     if (pts.size() == 1) pts.push_back(pts.front());
     cv::polylines(m, pts, false, cv::Scalar(year), 1, cv::LINE_8, kShift);
   }

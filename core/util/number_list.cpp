@@ -1,10 +1,8 @@
 #include "util/number_list.hpp"
 
-#include <cmath>
 #include <sstream>
-#include <stdexcept>
 
-#include "util/error.hpp"
+#include "util/parse_number.hpp"
 
 namespace kerf {
 
@@ -12,17 +10,7 @@ std::vector<float> parseNumberList(const std::string& text, const std::string& o
   std::istringstream in(text);
   std::vector<float> numbers;
   std::string item;
-  while (std::getline(in, item, ',')) {
-    const auto first = item.find_first_not_of(' '), last = item.find_last_not_of(' ');
-    const std::string trimmed = first == std::string::npos ? "" : item.substr(first, last - first + 1);
-    try {
-      std::size_t used = 0;
-      numbers.push_back(std::stof(trimmed, &used));
-      if (used != trimmed.size() || !std::isfinite(numbers.back())) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError(option + ": \"" + item + "\" is not a finite number");
-    }
-  }
+  while (std::getline(in, item, ',')) numbers.push_back(parseNumber<float>(item, option));
   return numbers;
 }
 

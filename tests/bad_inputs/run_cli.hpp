@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <string>
 
 extern char** environ;
@@ -46,6 +47,18 @@ inline CliResult runCli(const std::string& arguments, const std::string& runAs =
   if (::wait4(pid, &status, 0, &usage) != pid) return result;
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   result.peakRssKiB = usage.ru_maxrss;
+  return result;
+}
+
+// Runs `command` with bash (e.g. "ulimit -f 4; kerf-cli ..."), returning its exit code and output.
+inline CliResult runShell(const std::string& command) {
+  CliResult result;
+  FILE* pipe = ::popen(("bash -c '" + command + " 2>&1'").c_str(), "r");
+  if (!pipe) return result;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) result.output.append(buffer, n);
+  const int status = ::pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
 }
 
