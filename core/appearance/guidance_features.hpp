@@ -35,7 +35,7 @@ class WoodModel;
 // How much each feature counts in the patch distance (they are stored multiplied by these).
 struct GuidanceWeights {
   float phase = 1.0f;
-  float sawing = 0.6f;
+  float sawing = 2.0f;
   float density = 0.3f;
   float sapwood = 0.5f;
   float year = 0.0f;  // per year

@@ -205,9 +205,12 @@ class Synthesis {
                  float bound) const {
     float sum = 0;
     const int first = colourWeight > 0 ? 0 : kColour;
-    for (int dy = -r_; dy <= r_; ++dy) {
+    // Every other row and column of the patch: a third of the work for patches of 11 x 11, and still every
+    // feature band and pore row of the patch is seen.
+    const int step = r_ >= 3 ? 2 : 1;
+    for (int dy = -r_; dy <= r_; dy += step) {
       const int ty = std::clamp(py + dy, 0, t_.h - 1);
-      for (int dx = -r_; dx <= r_; ++dx) {
+      for (int dx = -r_; dx <= r_; dx += step) {
         const int tx = std::clamp(px + dx, 0, t_.w - 1);
         const int ix = std::clamp(static_cast<int>(std::floor(qx + c * dx + s * dy + 0.5f)), 0, e.w - 1);
         const int iy = std::clamp(static_cast<int>(std::floor(qy - s * dx + c * dy + 0.5f)), 0, e.h - 1);
