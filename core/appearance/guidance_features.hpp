@@ -34,12 +34,12 @@ class WoodModel;
 
 // How much each feature counts in the patch distance (they are stored multiplied by these).
 struct GuidanceWeights {
-  float phase = 1.0f;
-  float sawing = 2.0f;
+  float phase = 2.0f;
+  float sawing = 4.0f;
   float density = 0.3f;
   float sapwood = 0.5f;
   float year = 0.0f;  // per year
-  float ringAngle = 1.0f;
+  float ringAngle = 2.0f;
 };
 
 // cos, sin (phase), end grain, flat-sawn, density, sapwood, year, ring bands against grain (cos, sin)
