@@ -93,8 +93,8 @@ Image halveImage(const Image& image) {
 class Synthesis {
  public:
   Synthesis(const std::vector<ExemplarLevel>& exemplars, Level& target, const GuidedSynthesisOptions& options,
-            int level)
-      : ex_(exemplars), t_(target), o_(options), level_(level), r_(options.patchRadius) {
+            int level, bool coarsest)
+      : ex_(exemplars), t_(target), o_(options), level_(level), r_(options.patchRadius), coarsest_(coarsest) {
     const float sigma = 0.5f * r_ + 0.5f;
     for (int dy = -r_; dy <= r_; ++dy)
       for (int dx = -r_; dx <= r_; ++dx) voteWeight_.push_back(std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)));
@@ -256,7 +256,10 @@ class Synthesis {
   // Barnes et al. 2009 Sec. 3.2: candidates around the best at exponentially shrinking radii.
   void randomSearch(int x, int y, Match& m, Random& random, float colourWeight) const {
     const ExemplarLevel& e = ex_[m.e];
-    for (float radius = 0.5f * std::max(e.w, e.h); radius >= 1.0f; radius *= 0.5f) {
+    // Below the coarsest level the field was placed by the level above: the search stays near it (a few
+    // patch widths; the global candidates still let it jump), which saves half the distances.
+    const float start = coarsest_ ? 0.5f * std::max(e.w, e.h) : std::min(0.5f * std::max(e.w, e.h), 4.0f * r_);
+    for (float radius = start; radius >= 1.0f; radius *= 0.5f) {
       const float qx = m.x + radius * (2 * random.uniform() - 1), qy = m.y + radius * (2 * random.uniform() - 1);
       tryCandidate(x, y, m.e, qx, qy, m, colourWeight);
     }
@@ -275,6 +278,7 @@ class Synthesis {
   Level& t_;
   const GuidedSynthesisOptions& o_;
   int level_, r_;
+  bool coarsest_;
   std::vector<float> voteWeight_;
   std::vector<Match> nnf_;
 };
@@ -330,8 +334,8 @@ Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuid
   Level result;
   for (int level = levels - 1; level >= 0; --level) {
     Level t = levelFrom(nullptr, targetLevels[level]);
-    Synthesis synthesis(exLevels[level], t, options, level);
     const bool coarsest = level == levels - 1;
+    Synthesis synthesis(exLevels[level], t, options, level, coarsest);
     if (coarsest) {
       synthesis.initialiseRandom();
     } else {
