@@ -25,7 +25,7 @@ using namespace kerf;
 
 namespace {
 
-constexpr int kSide = 80;  // photo pixels per face: 2 px/mm on the 40 mm demo cube (small: fast tests)
+constexpr int kSide = 64;  // photo pixels per face: 1.6 px/mm on the 40 mm demo cube (small: fast tests)
 
 // The demo block and its six faces rendered by the model: the "photos" and the truth.
 struct Synthetic {
