@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "appearance/project_render.hpp"
 #include "command.hpp"
 #include "number_option.hpp"
 #include "geometry/cut_plane.hpp"
@@ -26,7 +27,7 @@ CutPlane parsePlane(const std::string& text) {
 }
 
 Command addRenderFacesCommand(CLI::App& app) {
-  auto* faces = app.add_subcommand("render-faces", "Render the model's six faces A.png..F.png");
+  auto* faces = app.add_subcommand("render-faces", "Render the model's six faces A.png..F.png (in the project's appearance: procedural or photo-true)");
   struct Options {
     std::string document, out;
     float pxPerMm = 6.4f;
@@ -43,7 +44,7 @@ Command addRenderFacesCommand(CLI::App& app) {
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
             createOutputFolder(o->out);
-            const auto images = renderFaces(model, o->pxPerMm, o->samples, context.progress());
+            const auto images = renderProjectFaces(project, model, o->pxPerMm, o->samples, context.progress());
             for (FaceId face : kAllFaces) {
               const Image& image = images[faceIndex(face)];
               writeImage(fs::path(o->out) / (std::string(1, faceLetter(face)) + ".png"), image);
@@ -58,7 +59,7 @@ Command addRenderFacesCommand(CLI::App& app) {
 
 Command addRenderCutCommand(CLI::App& app) {
   auto* cut =
-      app.add_subcommand("render-cut", "Render the cut surface of a plane through the block (RGBA PNG)");
+      app.add_subcommand("render-cut", "Render the cut surface of a plane through the block (RGBA PNG; in the project's appearance)");
   struct Options {
     std::string document, plane, out;
     float pxPerMm = 10.0f;
@@ -75,7 +76,7 @@ Command addRenderCutCommand(CLI::App& app) {
             const CutPlane plane = parsePlane(o->plane);
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
-            const Image image = renderCut(model, plane, o->pxPerMm, o->samples, context.progress());
+            const Image image = renderProjectCut(project, model, plane, o->pxPerMm, o->samples, context.progress());
             writeImage(o->out, image);
             context.samples = static_cast<std::size_t>(image.width) * image.height * o->samples * o->samples;
             std::printf("cut written to %s (%dx%d px, %.3g px/mm)\n", o->out.c_str(), image.width,

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include <sstream>
+#include "appearance/photo_true_appearance.hpp"
 #include "command.hpp"
 #include "number_option.hpp"
 #include "io/image.hpp"
@@ -71,6 +72,23 @@ Image comparisonSheet(const std::array<Image, 6>& photos, const std::array<Image
   return sheet;
 }
 
+// --appearance photo: checks that the photo-true appearance can be made (the project's photos, less its
+// held-out faces, load and fit their faces) and stores the choice.
+void storePhotoAppearance(Project& project, const std::string& photosFolder, const std::string& compare) {
+  if (!photosFolder.empty())
+    throw InputError("--photos is not used with --appearance photo: the photo-true appearance is made from the "
+                     "project's own photos (its \"faces\")");
+  if (!compare.empty()) throw InputError("--compare is not used with --appearance photo; use render-faces");
+  const WoodModel model(project);
+  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces);
+  std::string faces;
+  for (FaceId face : appearance.exemplarFaces()) faces += faceLetter(face);
+  project.appearance = Appearance::Photo;
+  std::printf("appearance: photo-true, made from the photos of faces %s at %.3g px/mm%s\n", faces.c_str(),
+              appearance.synthesisPxPerMm(),
+              project.heldOutFaces.empty() ? "" : (" (held out: " + project.heldOutFaces.letters() + ")").c_str());
+}
+
 }  // namespace
 
 Command addTextureCommand(CLI::App& app) {
@@ -79,7 +97,7 @@ Command addTextureCommand(CLI::App& app) {
                                      "transition) and colours of a project with a "
                                      "fitted growth field from its face photos (docs/texture.md)");
   struct Options {
-    std::string project, out, photos, compare, parameters;
+    std::string project, out, photos, compare, parameters, appearance = "procedural";
     unsigned seed = 1;
     int crops = 2, cropSize = 96, sweeps = 8, samples = 2, ringPhases = 0;
     bool noCoarse = false, keepColours = false;
@@ -104,6 +122,13 @@ Command addTextureCommand(CLI::App& app) {
                       "pores.radius_earlywood,rays.spacing)");
   cli::addNumber(texture, "--ring-phases", o->ringPhases,
                    "Also compare the statistics per part of the ring, in N ring phases (default 0: off)", 0, 8);
+  texture
+      ->add_option("--appearance", o->appearance,
+                   "procedural (default): infer the procedural model's detail from the photos (minutes). photo: "
+                   "make every surface of the project's own photos, re-grown along the fitted field (issue 17, "
+                   "docs/texture.md); stored in the project, used by render-faces and render-cut; the "
+                   "procedural parameters are kept as they are")
+      ->check(CLI::IsMember({"procedural", "photo"}));
   texture->add_flag("--no-coarse", o->noCoarse, "Skip the coarse size grid");
   texture->add_flag("--keep-colours", o->keepColours, "Do not refit the colours after the detail");
   texture->add_option("--compare", o->compare,
@@ -113,6 +138,13 @@ Command addTextureCommand(CLI::App& app) {
         const fs::path input = o->project;
         if (!fs::exists(input)) throw InputError("no such project or sample folder: " + input.string());
         Project project = loadDocument(input);
+        if (o->appearance == "photo") {
+          storePhotoAppearance(project, o->photos, o->compare);
+          saveProject(project, o->out);
+          std::printf("project written to %s\n", o->out.c_str());
+          return;
+        }
+        project.appearance = Appearance::Procedural;
         const std::array<Image, 6> photos = loadPhotos(project, o->photos);
         TextureInferenceOptions options;
         options.loss.seed = o->seed;

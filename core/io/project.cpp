@@ -54,6 +54,16 @@ std::string jsonProblem(const json::exception& e) {
 
 }  // namespace
 
+const char* appearanceName(Appearance appearance) {
+  return appearance == Appearance::Photo ? "photo" : "procedural";
+}
+
+Appearance appearanceFromName(const std::string& name) {
+  if (name == "photo") return Appearance::Photo;
+  if (name == "procedural") return Appearance::Procedural;
+  throw InputError("unknown appearance \"" + name + "\" (procedural or photo)");
+}
+
 json parametersToJson(const WoodParameters& params) {
   json out = json::object();
   const auto schema = parameterSchema();
@@ -149,6 +159,7 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
   if (project.log) out["log"] = projectLogToJson(*project.log);
   if (!project.knots.empty()) out["knots"] = blockKnotsToJson(project.knots);
   if (!project.heldOutFaces.empty()) out["held_out_faces"] = project.heldOutFaces.letters();
+  if (project.appearance != Appearance::Procedural) out["appearance"] = appearanceName(project.appearance);
   if (project.cutPlane) {
     out["view"] = {{"cut_plane",
                     {{"offset_mm", project.cutPlane->offsetMm},
@@ -211,6 +222,10 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
     } catch (const InputError& e) {
       throw InputError(std::string("held_out_faces: ") + e.what());
     }
+  }
+  if (in.contains("appearance") && !in["appearance"].is_null()) {
+    if (!in["appearance"].is_string()) throw InputError("\"appearance\" must be \"procedural\" or \"photo\"");
+    project.appearance = appearanceFromName(in["appearance"].get<std::string>());
   }
   if (in.contains("view") && in["view"].is_object() && in["view"].contains("cut_plane")) {
     const json& cut = in["view"]["cut_plane"];

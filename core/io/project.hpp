@@ -21,6 +21,13 @@ namespace kerf {
 inline constexpr int kProjectFormatVersion = 1;
 inline constexpr const char* kProjectFormatName = "kerf-project";
 
+// How a project's surfaces are coloured (issue 17): by the procedural model, or photo-true, made of the
+// project's own face photos re-grown along the fitted field (appearance/photo_true_appearance.hpp).
+enum class Appearance { Procedural, Photo };
+const char* appearanceName(Appearance appearance);  // "procedural", "photo"
+// "procedural" or "photo"; InputError otherwise.
+Appearance appearanceFromName(const std::string& name);
+
 struct Project {
   Block block;
   WoodParameters params;
@@ -45,6 +52,8 @@ struct Project {
   // fit, the colours and the texture use nothing of their photos, so their rendering is a prediction.
   // Optional key "held_out_faces", the letters ("C"); absent when empty.
   FaceSet heldOutFaces;
+  // Optional key "appearance" ("photo"); absent when procedural.
+  Appearance appearance = Appearance::Procedural;
 
   GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
 };

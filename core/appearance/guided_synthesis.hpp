@@ -1,0 +1,51 @@
+#pragma once
+// Guided patch synthesis: an image for a target surface made of the photos' own patches, each taken where
+// the photo's guidance features (appearance/guidance_features.hpp) match the target's.
+//
+// The method, per pyramid level from coarse to fine (Hertzmann et al. 2001, "Image analogies", Sec. 3.2:
+// texture by numbers):
+//  - a nearest-neighbour field from every target pixel to a photo position, found with PatchMatch
+//    (Barnes et al. 2009, Sec. 3: random initialisation, propagation, random search), whose state also
+//    holds the rotation that turns the photo's grain direction onto the target's (so a quarter-sawn photo
+//    patch can cover a cut whose grain runs at 30 degrees; Barnes et al. 2010 generalise PatchMatch to
+//    rotations the same way);
+//  - the patch distance is the guidance features' (ring phase weighted most, so the latewood bands land
+//    where the field puts them) plus, once there is an estimate, the colours' (coherence);
+//  - the colours are then re-estimated by letting every patch vote for the pixels it covers, weighted by
+//    a Gaussian around its centre (Kwatra et al. 2005, "Texture optimization", Sec. 3: the E step and the
+//    M step alternate);
+//  - the field is carried to the next, finer level and refined there.
+// Rows (and, in the vertical propagation sweep, columns) run in parallel; each line is processed in order
+// and reads only its own line of the field, with random numbers drawn from (seed, level, pass, line), so the
+// result does not depend on the number of threads: deterministic for a seed.
+#include <cstdint>
+#include <vector>
+
+#include "appearance/guidance_features.hpp"
+#include "io/image.hpp"
+#include "util/progress.hpp"
+
+namespace kerf {
+
+// A photo with its guidance at its own pixels (same size).
+struct Exemplar {
+  Image colour;  // RGB
+  SurfaceGuidance guidance;
+  int marginPx = 3;  // photo edges are often damaged: no pixel this close to the border is copied
+};
+
+struct GuidedSynthesisOptions {
+  std::uint32_t seed = 1;
+  int levels = 2;         // pyramid levels (each halves the resolution)
+  int patchRadius = 5;    // patches of (2r+1)^2 pixels at every level
+  int passes = 3;         // PatchMatch + vote passes per level
+  float colourWeight = 3.0f;  // colour against guidance in the patch distance
+  bool sharpFinal = true;     // the final colours from each pixel's own match rather than the vote
+};
+
+// The synthesised colours (RGB) at every pixel of `target` (its size). InputError without exemplars or
+// with exemplars too small for the patches. Cancellable.
+Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuidance& target,
+                       const GuidedSynthesisOptions& options, const Progress& progress = {});
+
+}  // namespace kerf
