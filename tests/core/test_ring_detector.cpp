@@ -163,10 +163,13 @@ TEST_P(RingDetectorSynthetic, FindsTheTrueRingBoundariesWithin1mm) {
 
 INSTANTIATE_TEST_SUITE_P(Woods, RingDetectorSynthetic,
                          // Measured (seed 7, docs/rings.md): sugi 0.984/0.997, kuri 0.942/0.985,
-                         // nara 0.928/0.998, maple 0.993/0.999, red_oak 0.907/0.988.
-                         ::testing::Values(WoodCase{"sugi", 0.93, 0.95}, WoodCase{"kuri", 0.88, 0.93},
+                         // nara 0.928/0.998, maple 0.993/0.999, red_oak 0.907/0.988. Since pores are
+                         // holes with a shadow (issue 16): kuri 0.859/0.892 (its latewood now holds
+                         // pores, as chestnut's does: CN03's photos), nara 0.898/0.992, red_oak
+                         // 0.848/0.981; the others unchanged.
+                         ::testing::Values(WoodCase{"sugi", 0.93, 0.95}, WoodCase{"kuri", 0.83, 0.86},
                                            WoodCase{"nara", 0.87, 0.95}, WoodCase{"maple", 0.95, 0.95},
-                                           WoodCase{"red_oak", 0.85, 0.93}),
+                                           WoodCase{"red_oak", 0.82, 0.93}),
                          [](const auto& info) { return std::string(info.param.preset); });
 
 TEST(RingDetector, AgreesWithTheMokumeUNetOnCN03) {
