@@ -1,4 +1,5 @@
 #include "appearance/guided_synthesis.hpp"
+#include "util/split_mix.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,17 +39,7 @@ struct Match {
   float cost = std::numeric_limits<float>::max();
 };
 
-// splitmix64: deterministic on every platform.
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  float uniform() { return static_cast<float>(next() >> 40) * (1.0f / 16777216.0f); }  // [0, 1)
-};
+using Random = SplitMix;
 
 Random lineRandom(std::uint32_t seed, int level, int pass, int sweep, int line) {
   std::uint64_t s = seed;

@@ -1,4 +1,5 @@
 #include "texture/face_crops.hpp"
+#include "util/split_mix.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,18 +13,6 @@ namespace kerf {
 namespace {
 
 constexpr int kEdgeMarginPx = 3;
-
-// A small deterministic generator (splitmix64): the same crops on every platform and standard library.
-struct SplitMix {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  int below(int n) { return n <= 1 ? 0 : static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
-};
 
 }  // namespace
 
