@@ -240,12 +240,13 @@ TEST(PartBake, TextureAtEachVertexAndInsideTrianglesIsTheWoodThere) {
 
     // At a vertex's uv, the texture (bilinear, as a viewer samples it) is the wood at the vertex's block
     // position. Texels are ~0.1 mm here; the wood's colour changes little over that except at pores and
-    // ring edges, so the mean is tight and single vertices may differ more.
+    // ring edges, so the mean is tight and single vertices may differ more (a vertex on the sharp rim of a
+    // pore, a hole since issue 16, measured 0.21; 0.30 still catches a texel from another place).
     double sum = 0;
     for (std::size_t v = 0; v < atlas.mesh.positions.size(); ++v) {
       const float d = maxDifference(sample(baked.image, atlas.mesh.uvs[v]),
                                     demoModel().evaluate(atlas.mesh.positions[v]).color);
-      EXPECT_LT(d, 0.2f) << "vertex " << v;
+      EXPECT_LT(d, 0.3f) << "vertex " << v;
       sum += d;
     }
     EXPECT_LT(sum / atlas.mesh.positions.size(), 0.03);
