@@ -31,8 +31,9 @@ ALLOWED = {
     "render": {"util", "geometry", "params", "field", "material"},
     "rings": {"util", "geometry", "render"},
     "io": {"util", "geometry", "params", "field", "render", "rings"},
-    "fit": {"util", "geometry", "params", "field", "render", "rings", "io"},
+    "fit": {"util", "geometry", "params", "field", "model", "render", "rings", "io"},
     "texture": {"util", "geometry", "params", "field", "render", "io", "fit"},
+    "appearance": {"util", "geometry", "params", "field", "render", "io"},  # photo-true, beside texture
     "mesh": {"util", "geometry", "render", "io"},
     "export": {"util", "geometry", "render", "io", "mesh"},
     "demo": {"util", "material", "render", "rings", "io"},
