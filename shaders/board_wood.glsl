@@ -21,7 +21,7 @@ WoodSample boardWood(vec3 p) {
   s.latewood = 1.0;  // the colour map has the rings; the finish's gloss stays even
   s.pigment = 1.0;
   s.pore = 0.0;
-  s.poreShade = vec3(1.0);
+  s.shade = vec3(1.0);
   s.ray = 0.0;
   s.color = knotColor(k);
   // The fibres run up the log: its axis in the board frame (the transposed rotation's z column).

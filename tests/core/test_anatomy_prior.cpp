@@ -69,17 +69,16 @@ TEST(AnatomyPrior, SyntheticBlocksOfKnownFibreDirection) {
     double maxAngleDeg;  // measured + margin; < 0: the estimate fails and must say so (confidence < 0.05)
   };
   // nara: ring-porous oak; maple: diffuse-porous. Measured (256 px faces, 2x2 samples): 0.1 deg for the
-  // axis-aligned blocks (confidence 0.47 nara, 0.33 maple); 4.5, 2.2 (photo look) and 1.2 deg for the
-  // 20-degree tilts (confidence 0.13-0.16). The tilted maple block with the photo look fails (42 deg):
-  // the model's end-grain faces show the ring lines as strongly as the side faces show the fine pores
-  // once noise is added, and the faces perpendicular to x are tangential faces crossed by the tilted rings;
-  // the tensor then has two nearly equal eigenvalues and the confidence drops to 0.007, so the prior
-  // (penalty ~ confidence) has no effect there.
+  // axis-aligned blocks (confidence 0.51 nara, 0.45 maple); 5.7, 3.7 (photo look), 3.0 and 8.4 (photo
+  // look) deg for the 20-degree tilts (confidence 0.10-0.22). Before the fibre streaks became a shade on
+  // the colour (kernels/wood.glsl fiberShadeAt) they were nearly invisible on maple, and the tilted maple
+  // block with the photo look failed (42 deg, confidence 0.007): its end-grain faces showed the ring lines
+  // as strongly as the side faces showed the fine pores once noise was added.
   const Case cases[] = {
       {"nara", 0, 0, false, 2},    {"nara", 90, 0, false, 2},    {"nara", 90, -90, false, 2},
       {"nara", 20, 30, false, 9},  {"nara", 20, 135, true, 7},   {"maple", 0, 0, false, 2},
       {"maple", 90, 0, false, 2},  {"maple", 90, -90, false, 2}, {"maple", 20, -60, false, 6},
-      {"maple", 20, 30, true, -1},
+      {"maple", 20, 30, true, 12},
   };
   const Block block;
   for (const Case& c : cases) {
@@ -95,7 +94,7 @@ TEST(AnatomyPrior, SyntheticBlocksOfKnownFibreDirection) {
       EXPECT_LT(e.confidence, 0.05f) << label;
     } else {
       EXPECT_LT(angle, c.maxAngleDeg) << label;
-      EXPECT_GT(e.confidence, 0.1f) << label;
+      EXPECT_GT(e.confidence, 0.08f) << label;
     }
   }
 }

@@ -166,9 +166,13 @@ INSTANTIATE_TEST_SUITE_P(Woods, RingDetectorSynthetic,
                          // nara 0.928/0.998, maple 0.993/0.999, red_oak 0.907/0.988. Since pores are
                          // holes with a shadow (issue 16): kuri 0.859/0.892 (its latewood now holds
                          // pores, as chestnut's does: CN03's photos), nara 0.898/0.992, red_oak
-                         // 0.848/0.981; the others unchanged.
-                         ::testing::Values(WoodCase{"sugi", 0.93, 0.95}, WoodCase{"kuri", 0.83, 0.86},
-                                           WoodCase{"nara", 0.87, 0.95}, WoodCase{"maple", 0.95, 0.95},
+                         // 0.848/0.981; the others unchanged. Since fibre streaks are a shade on the
+                         // colour (they used to vanish on woods of faint rings): kuri 0.837/0.893 (its
+                         // preset's fibres were set stronger, as CN03 shows), nara 0.895/0.991, maple
+                         // 0.938/0.996 (its flat-sawn faces A, F: precision 0.78, the streaks across the
+                         // faint wide ring figure), red_oak 0.841/0.980; sugi unchanged.
+                         ::testing::Values(WoodCase{"sugi", 0.93, 0.95}, WoodCase{"kuri", 0.81, 0.86},
+                                           WoodCase{"nara", 0.87, 0.95}, WoodCase{"maple", 0.92, 0.95},
                                            WoodCase{"red_oak", 0.82, 0.93}),
                          [](const auto& info) { return std::string(info.param.preset); });
 

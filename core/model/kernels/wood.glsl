@@ -27,19 +27,24 @@ KERF_CONST uint kPoreColumn = 6u;
 KERF_CONST uint kPoreCell = 7u;
 KERF_CONST uint kRayColumn = 8u;
 KERF_CONST uint kRayCell = 9u;
+KERF_CONST uint kFiberStagger = 10u;
 
 // Pores are open vessels: a hole's shadow darkens the wood by a fixed factor per unit of pores.darkness,
 // whatever the wood's pigment. (As extra pigment t they vanished wherever the fitted latewood colour came
 // close to the earlywood's, as on CN03 - issue 16. Following the pigment's hue instead let the colour fit
 // turn CN03's pores olive.) 0.5 keeps the default species' pores about as dark as before.
 KERF_CONST float kPoreShadow = 0.5f;
+// Fibre streaks (Mokume A.2.3) are a shade of the same kind, lighter and darker by turns: as pigment t
+// they scaled with log(latewood / earlywood) and vanished on CN03, whose fitted colours lie within 15 % of
+// each other, while its photos show the fibres on every long-grain face. exp(+-0.25) at strength 1.
+KERF_CONST float kFiberShade = 0.25f;
 
 struct WoodSample {
   float year;           // growth field value G (years since the pith) at the distorted point
   float latewood;       // season blend s in [0, 1]: 0 earlywood, 1 latewood
   float pigment;        // Beer's-law concentration t: colour = early * (late / early)^t
   float pore;           // pore weight in [0, 1] (Wyvill kernel)
-  vec3 poreShade;       // the pore's shadow: the factor on the colour (poreShadeOf)
+  vec3 shade;           // factor on the colour: the pore's shadow times the fibre streaks
   float ray;            // ray weight in [0, 1]
   vec3 color;           // RGB in [0, 1], as stored in 8-bit images (sRGB-encoded)
   vec3 fiberDirection;  // unit, block frame (the pith direction unless asked for)
@@ -60,9 +65,21 @@ float holeProfile(float d2) {
 
 // The colour factor of a pore's shadow: exp(-kPoreShadow * darkness * pore) in luminance, absorbed per
 // channel as pores.shadow_hue says (its mean normalised away, so pores.darkness alone sets how dark).
-vec3 poreShadeOf(float pore) {
+vec3 shadeOf(float amount) {
   vec3 hue = max(P.poreShadowHue, vec3(1e-3f));
-  return exp(-(kPoreShadow * P.poreDarkness * pore / ((hue.x + hue.y + hue.z) / 3.0f)) * hue);
+  return exp(-(amount / ((hue.x + hue.y + hue.z) / 3.0f)) * hue);
+}
+vec3 poreShadeOf(float pore) { return shadeOf(kPoreShadow * P.poreDarkness * pore); }
+
+// A fibre streak's shade at the undistorted point: value noise stretched along the fibres (the height),
+// in [-1, 1], so the streaks leave the mean colour as it was. The noise's lattice planes across the
+// fibres are staggered by a smooth offset, else every streak would end at the same heights and long grain
+// would show rows across it every fibres.length.
+vec3 fiberShadeAt(Cylindrical c) {
+  if (P.fiberStrength <= 0.0f) return vec3(1.0f);
+  vec3 q = vec3(c.x / P.fiberWidth, c.y / P.fiberWidth, c.height / P.fiberLength);
+  q.z += 2.0f * valueNoise3(vec3(0.5f * q.x, 0.5f * q.y, 0.0f), u_hashSeed + kFiberStagger).x;
+  return shadeOf(kFiberShade * P.fiberStrength * valueNoise3(q, u_hashSeed + kFiber).x);
 }
 
 float wyvill(float d2) {
@@ -239,17 +256,13 @@ WoodSample evaluateWood(vec3 p, int faceIndex, bool wantFiber) {
     float m = P.mottleScale;
     t += 0.5f * P.mottleStrength * fractalNoise3(vec3(c.x / m, c.y / m, c.height / (4.0f * m)), u_hashSeed + kMottle).x;
   }
-  if (P.fiberStrength > 0.0f) {
-    vec3 q = vec3(c.x / P.fiberWidth, c.y / P.fiberWidth, c.height / P.fiberLength);
-    t += 0.5f * P.fiberStrength * valueNoise3(q, u_hashSeed + kFiber).x;
-  }
   s.pigment = t;
-  s.poreShade = poreShadeOf(s.pore);
+  s.shade = poreShadeOf(s.pore) * fiberShadeAt(c);
 
   float sap = stepSmooth(P.sapwoodStart - 0.5f * P.sapwoodTransition, P.sapwoodStart + 0.5f * P.sapwoodTransition, s.year);
   vec3 early = max(mix(P.earlywoodColor, P.sapwoodEarlywoodColor, sap), vec3(1e-3f));
   vec3 late = max(mix(P.latewoodColor, P.sapwoodLatewoodColor, sap), vec3(1e-3f));
-  vec3 color = early * pow(late / early, vec3(t)) * s.poreShade;
+  vec3 color = early * pow(late / early, vec3(t)) * s.shade;
   color = mix(color, P.rayColor, P.rayOpacity * s.ray);
   color -= knotDarkness * P.knotDarkening;  // Larsson et al. 2022 Sec. 4.3
   if (faceIndex == 0) color *= P.faceTintA;
