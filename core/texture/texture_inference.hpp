@@ -10,8 +10,9 @@
 // 3. The colours for the new detail (pores and fibres change the mean pigment): either the colour fit
 //    run again (fit/colour_fit.hpp) or only the face tints scaled to each photo's mean colour, whichever
 //    lowers the loss more; neither when neither does.
-// The loss (texture/texture_objective.hpp) compares each face with its own photo: style statistics of a
-// fixed filter bank plus a weak L1 colour term. Deterministic for a seed (crop placement), cancellable.
+// The loss (texture/texture_objective.hpp) compares each face with its own photo: the grain direction and
+// the contrast a woodworker sees (texture/grain_view.hpp), style statistics of a fixed filter bank and a
+// weak L1 colour term. Deterministic for a seed (crop placement), cancellable.
 #include <array>
 #include <functional>
 #include <string>

@@ -1,7 +1,8 @@
 #pragma once
-// The loss the texture inference minimises: for every photographed face, the style distance
-// (texture/texture_statistics.hpp) between crops of the rendered face and the same crops of its photo,
-// plus a weak L1 colour term (Mokume A.2.3 fits colours with L1). Each face is compared with its own
+// The loss the texture inference minimises: for every photographed face, between crops of the rendered
+// face and the same crops of its photo, the grain direction agreement and contrast ratio
+// (texture/grain_view.hpp), the style distance (texture/texture_statistics.hpp), and a weak L1 colour term
+// (Mokume A.2.3 fits colours with L1). Each face is compared with its own
 // photo, because what a face shows depends on its orientation to the grain (learned-inference paper
 // Sec. 3.3): end grain shows pores as dots and rays as lines across the rings, side grain shows pores
 // as grooves and rays as flecks. End-grain and side-grain faces are averaged separately and then
@@ -18,6 +19,7 @@
 #include "io/image.hpp"
 #include "params/parameter_schema.hpp"
 #include "texture/face_crops.hpp"
+#include "texture/grain_view.hpp"
 #include "texture/texture_statistics.hpp"
 #include "util/progress.hpp"
 
@@ -29,6 +31,11 @@ struct TextureLossOptions {
   int samples = 2;    // points per pixel side (pores are about a pixel wide in Mokume's 6.4 px/mm photos)
   std::uint32_t seed = 1;  // where the crops lie
   double l1Weight = 2.0;   // mean |render - photo| (0..1 colour units) is ~0.02-0.1, the style ~0.1-1
+  // What a woodworker sees first (texture/grain_view.hpp): weight of (1 - grain direction agreement) and
+  // of |log contrast ratio|. Without them the style statistics alone let pores run across the grain and
+  // washed the flat-sawn ring figure out (issue 16).
+  double grainWeight = 0.5;
+  double contrastWeight = 0.5;
   // Statistics also per part of the ring (ring phase in this many equal parts, from the fitted field), so
   // the loss sees where in the ring pores and latewood sit; 0: pooled over the face only. Off by default:
   // on CN03 three phases did not make the result look closer and made the loss noisier (docs/texture.md).
@@ -44,6 +51,8 @@ struct FaceTextureScore {
   // pattern without the detail. Plain L1 grows when pores appear anywhere but exactly where the photo
   // has its own, so it cannot judge detail; this one says whether the colours still match.
   double l1Blurred = 0;
+  double grain = 0;     // grain direction agreement with the photo (texture/grain_view.hpp), at most 1
+  double contrast = 0;  // band-passed contrast over the photo's (1 the same)
 };
 
 struct TextureScore {
@@ -83,6 +92,7 @@ class TextureObjective {
   FaceCropLayout layout_;
   std::array<FaceOrientation, 6> orientations_{};
   std::vector<Image> photoCrops_;                                    // layout_.crops order
+  std::vector<GrainView> photoGrain_;                                // layout_.crops order
   std::array<std::vector<TextureStatistics>, 6> photoStatistics_{};  // per face: pooled, per ring phase
   std::vector<std::vector<std::uint8_t>> cropLabels_;                // ring phase of each crop pixel
   std::array<std::vector<std::size_t>, 6> cropsOfFace_{};            // indices into layout_.crops

@@ -1,0 +1,83 @@
+#include "texture/grain_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "util/error.hpp"
+
+namespace kerf {
+namespace {
+
+// Luminance after the image's own white balance (each channel over twice its mean).
+cv::Mat balancedLuminance(const Image& image) {
+  if (image.channels < 3) throw InputError("grain view: a colour image is needed");
+  double mean[3] = {0, 0, 0};
+  const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) mean[c] += image.pixels[i * image.channels + c];
+  float scale[3];
+  for (int c = 0; c < 3; ++c) scale[c] = static_cast<float>(1.0 / (2.0 * mean[c] / std::max<std::size_t>(n, 1) + 1e-6));
+  cv::Mat lum(image.height, image.width, CV_32F);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float* p = image.pixel(x, y);
+      lum.at<float>(y, x) = 0.299f * p[0] * scale[0] + 0.587f * p[1] * scale[1] + 0.114f * p[2] * scale[2];
+    }
+  return lum;
+}
+
+cv::Mat blurred(const cv::Mat& m, double sigma) {
+  cv::Mat out;
+  cv::GaussianBlur(m, out, cv::Size(), sigma, sigma, cv::BORDER_REFLECT101);
+  return out;
+}
+
+}  // namespace
+
+GrainView grainViewOf(const Image& image) {
+  const cv::Mat lum = balancedLuminance(image);
+  GrainView view;
+  view.width = image.width, view.height = image.height;
+  cv::Scalar mean, spread;
+  cv::meanStdDev(blurred(lum, 1.5) - blurred(lum, 8.0), mean, spread);
+  view.bandSpread = spread[0];
+
+  cv::Mat gx, gy;
+  const cv::Mat smooth = blurred(lum, 1.0);
+  cv::Sobel(smooth, gx, CV_32F, 1, 0);
+  cv::Sobel(smooth, gy, CV_32F, 0, 1);
+  const cv::Mat j11 = blurred(gx.mul(gx), 6.0), j22 = blurred(gy.mul(gy), 6.0), j12 = blurred(gx.mul(gy), 6.0);
+  const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
+  view.direction.resize(n), view.coherence.resize(n);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float a = j11.at<float>(y, x), b = j22.at<float>(y, x), c = j12.at<float>(y, x);
+      const std::size_t i = static_cast<std::size_t>(y) * image.width + x;
+      view.direction[i] = 0.5f * std::atan2(2.0f * c, a - b);
+      view.coherence[i] = std::sqrt((a - b) * (a - b) + 4.0f * c * c) / (a + b + 1e-9f);
+    }
+  return view;
+}
+
+double grainAgreement(const GrainView& render, const GrainView& photo, int margin) {
+  if (render.width != photo.width || render.height != photo.height)
+    throw InputError("grain agreement: the render and the photo differ in size");
+  double agree = 0, photoNorm = 0, renderNorm = 0;
+  for (int y = margin; y < photo.height - margin; ++y)
+    for (int x = margin; x < photo.width - margin; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * photo.width + x;
+      const double cp = photo.coherence[i], cr = render.coherence[i];
+      agree += cp * cr * std::cos(2.0 * (photo.direction[i] - render.direction[i]));
+      photoNorm += cp * cp, renderNorm += cr * cr;
+    }
+  const double norm = std::sqrt(photoNorm * renderNorm);
+  return norm > 1e-12 ? agree / norm : 0.0;
+}
+
+double contrastRatio(const GrainView& render, const GrainView& photo) {
+  return render.bandSpread / (photo.bandSpread + 1e-9);
+}
+
+}  // namespace kerf
