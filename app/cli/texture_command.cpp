@@ -98,8 +98,10 @@ Command addTextureCommand(CLI::App& app) {
                                      "fitted growth field from its face photos (docs/texture.md)");
   struct Options {
     std::string project, out, photos, compare, parameters, appearance = "procedural";
-    unsigned seed = 1;
-    int crops = 2, cropSize = 96, sweeps = 8, samples = 2, ringPhases = 0;
+    const TextureInferenceOptions defaults;  // the core's defaults, stated once
+    unsigned seed = defaults.loss.seed;
+    int crops = defaults.loss.cropsPerFace, cropSize = defaults.loss.cropSize, sweeps = defaults.search.maxSweeps,
+        samples = defaults.loss.samples, ringPhases = defaults.loss.ringPhaseBins;
     bool noCoarse = false, keepColours = false;
   };
   auto o = std::make_shared<Options>();
@@ -111,12 +113,12 @@ Command addTextureCommand(CLI::App& app) {
   texture->add_option(
       "--photos", o->photos,
       "Folder with the face photos A_col.png .. F_col.png (or A.png ..); default: the project's");
-  cli::addNumber(texture, "--seed", o->seed, "Where the compared crops lie (default 1)");
-  cli::addNumber(texture, "--crops", o->crops, "Crops per face (default 2)", 1, 16);
-  cli::addNumber(texture, "--crop-size", o->cropSize, "Crop side in photo pixels (default 96)", 16, 1024);
-  cli::addNumber(texture, "--sweeps", o->sweeps, "Coordinate-search sweeps (default 8; 0 = coarse search only)",
+  cli::addNumber(texture, "--seed", o->seed, "Where the compared crops lie (default " + std::to_string(o->seed) + ")");
+  cli::addNumber(texture, "--crops", o->crops, "Crops per face (default " + std::to_string(o->crops) + ")", 1, 16);
+  cli::addNumber(texture, "--crop-size", o->cropSize, "Crop side in photo pixels (default " + std::to_string(o->cropSize) + ")", 16, 1024);
+  cli::addNumber(texture, "--sweeps", o->sweeps, "Coordinate-search sweeps (default " + std::to_string(o->sweeps) + "; 0 = coarse search only)",
                  0, 100);
-  cli::addNumber(texture, "--samples", o->samples, "Points per pixel side when rendering (default 2)", 1, 4);
+  cli::addNumber(texture, "--samples", o->samples, "Points per pixel side when rendering (default " + std::to_string(o->samples) + ")", 1, 4);
   texture->add_option("--params", o->parameters,
                       "Comma-separated detail parameters to search (default: all; e.g. "
                       "pores.radius_earlywood,rays.spacing)");
