@@ -36,19 +36,26 @@ cv::Mat blurred(const cv::Mat& m, double sigma) {
 
 }  // namespace
 
-GrainView grainViewOf(const Image& image) {
+GrainView grainViewOf(const Image& image, double pxPerMm) {
+  if (!(pxPerMm > 0)) throw InputError("grain view: the scale must be positive");
+  const double k = pxPerMm / kYardstickPxPerMm;
   const cv::Mat lum = balancedLuminance(image);
   GrainView view;
   view.width = image.width, view.height = image.height;
+  view.margin = static_cast<int>(std::lround(12.0 * k));
   cv::Scalar mean, spread;
-  cv::meanStdDev(blurred(lum, 1.5) - blurred(lum, 8.0), mean, spread);
+  cv::meanStdDev(blurred(lum, 1.5 * k) - blurred(lum, 8.0 * k), mean, spread);
   view.bandSpread = spread[0];
+  const cv::Mat figure = blurred(lum, 3.0 * k) - blurred(lum, 16.0 * k);
+  view.figure.assign(figure.begin<float>(), figure.end<float>());
 
   cv::Mat gx, gy;
-  const cv::Mat smooth = blurred(lum, 1.0);
+  const cv::Mat smooth = blurred(lum, 1.0 * k);
   cv::Sobel(smooth, gx, CV_32F, 1, 0);
   cv::Sobel(smooth, gy, CV_32F, 0, 1);
-  const cv::Mat j11 = blurred(gx.mul(gx), 6.0), j22 = blurred(gy.mul(gy), 6.0), j12 = blurred(gx.mul(gy), 6.0);
+  const double window = 6.0 * k;
+  const cv::Mat j11 = blurred(gx.mul(gx), window), j22 = blurred(gy.mul(gy), window),
+                j12 = blurred(gx.mul(gy), window);
   const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
   view.direction.resize(n), view.coherence.resize(n);
   for (int y = 0; y < image.height; ++y)
@@ -61,7 +68,8 @@ GrainView grainViewOf(const Image& image) {
   return view;
 }
 
-double grainAgreement(const GrainView& render, const GrainView& photo, int margin) {
+double grainAgreement(const GrainView& render, const GrainView& photo) {
+  const int margin = photo.margin;
   if (render.width != photo.width || render.height != photo.height)
     throw InputError("grain agreement: the render and the photo differ in size");
   double agree = 0, photoNorm = 0, renderNorm = 0;
@@ -74,6 +82,23 @@ double grainAgreement(const GrainView& render, const GrainView& photo, int margi
     }
   const double norm = std::sqrt(photoNorm * renderNorm);
   return norm > 1e-12 ? agree / norm : 0.0;
+}
+
+double figureCorrelation(const GrainView& render, const GrainView& photo) {
+  const int margin = photo.margin;
+  if (render.width != photo.width || render.height != photo.height)
+    throw InputError("figure correlation: the render and the photo differ in size");
+  double sr = 0, sp = 0, srr = 0, spp = 0, srp = 0, n = 0;
+  for (int y = margin; y < photo.height - margin; ++y)
+    for (int x = margin; x < photo.width - margin; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * photo.width + x;
+      const double r = render.figure[i], p = photo.figure[i];
+      sr += r, sp += p, srr += r * r, spp += p * p, srp += r * p, n += 1;
+    }
+  if (n < 2) return 0.0;
+  const double covariance = srp - sr * sp / n;
+  const double varianceR = srr - sr * sr / n, varianceP = spp - sp * sp / n;
+  return varianceR > 1e-12 && varianceP > 1e-12 ? covariance / std::sqrt(varianceR * varianceP) : 0.0;
 }
 
 double contrastRatio(const GrainView& render, const GrainView& photo) {

@@ -74,7 +74,7 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
   for (std::size_t k = 0; k < layout_.crops.size(); ++k) {
     const FaceCrop& crop = layout_.crops[k];
     photoCrops_.push_back(cropImage(photos[faceIndex(crop.face)], crop));
-    photoGrain_.push_back(grainViewOf(photoCrops_.back()));
+    photoGrain_.push_back(grainViewOf(photoCrops_.back(), layout_.pxPerMm[faceIndex(crop.face)]));
     cropsOfFace_[faceIndex(crop.face)].push_back(k);
     if (options.ringPhaseBins > 0)
       cropLabels_.push_back(
@@ -101,7 +101,8 @@ double TextureObjective::combine(const std::array<FaceTextureScore, 6>& faces) c
     if (!faces[i].used) continue;
     const double face = faces[i].style + options_.l1Weight * faces[i].l1 +
                         options_.grainWeight * (1.0 - faces[i].grain) +
-                        options_.contrastWeight * std::abs(std::log(std::max(faces[i].contrast, 1e-3)));
+                        options_.contrastWeight * std::abs(std::log(std::max(faces[i].contrast, 1e-3))) +
+                        options_.figureWeight * (1.0 - faces[i].figure);
     if (orientations_[i].grain == FaceGrain::EndGrain)
       end += face, ++endCount;
     else
@@ -136,14 +137,15 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
         if (cropsOfFace_[face].empty()) return;
         std::vector<Image> faceCrops;
         std::vector<std::vector<std::uint8_t>> labels;
-        double l1 = 0, grain = 0, contrast = 0;
+        double l1 = 0, grain = 0, contrast = 0, figure = 0;
         for (std::size_t k : cropsOfFace_[face]) {
           faceCrops.push_back(rendered[c * crops + k]);
           if (!cropLabels_.empty()) labels.push_back(cropLabels_[k]);
           l1 += meanAbsoluteDifference(rendered[c * crops + k], photoCrops_[k]);
-          const GrainView view = grainViewOf(rendered[c * crops + k]);
+          const GrainView view = grainViewOf(rendered[c * crops + k], layout_.pxPerMm[face]);
           grain += grainAgreement(view, photoGrain_[k]);
           contrast += contrastRatio(view, photoGrain_[k]);
+          figure += figureCorrelation(view, photoGrain_[k]);
         }
         FaceTextureScore& score = scores[c].faces[face];
         const double count = static_cast<double>(cropsOfFace_[face].size());
@@ -151,6 +153,7 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
         score.l1 = l1 / count;
         score.grain = grain / count;
         score.contrast = contrast / count;
+        score.figure = figure / count;
         score.style = faceStyle(computeLabelledTextureStatistics(faceCrops, labels, options_.ringPhaseBins,
                                                                  layout_.pxPerMm[face], options_.statistics),
                                 photoStatistics_[face]);
@@ -203,13 +206,15 @@ TextureScore TextureObjective::evaluateFullFaces(const WoodParameters& params,
       return computeLabelledTextureStatistics(std::span<const Image>(&im, 1), labels, options_.ringPhaseBins,
                                               layout_.pxPerMm[i], options_.statistics);
     };
-    const GrainView view = grainViewOf(image), photoView = grainViewOf(photo);
+    const GrainView view = grainViewOf(image, layout_.pxPerMm[i]);
+    const GrainView photoView = grainViewOf(photo, layout_.pxPerMm[i]);
     score.faces[i] = {true,
                       faceStyle(statsOf(image), statsOf(photo)),
                       meanAbsoluteDifference(image, photo),
                       blurredMeanAbsoluteDifference(image, photo, layout_.pxPerMm[i]),
                       grainAgreement(view, photoView),
-                      contrastRatio(view, photoView)};
+                      contrastRatio(view, photoView),
+                      figureCorrelation(view, photoView)};
   }
   score.loss = combine(score.faces);
   return score;

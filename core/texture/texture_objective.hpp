@@ -40,6 +40,7 @@ struct TextureLossOptions {
   // washed the flat-sawn ring figure out (issue 16).
   double grainWeight = 0.5;
   double contrastWeight = 0.5;
+  double figureWeight = 1.0;  // of (1 - figure correlation): the ring figure stays where the field put it
   // Statistics also per part of the ring (ring phase in this many equal parts, from the fitted field), so
   // the loss sees where in the ring pores and latewood sit; 0: pooled over the face only. Off by default:
   // on CN03 three phases did not make the result look closer and made the loss noisier (docs/texture.md).
@@ -57,6 +58,7 @@ struct FaceTextureScore {
   double l1Blurred = 0;
   double grain = 0;     // grain direction agreement with the photo (texture/grain_view.hpp), at most 1
   double contrast = 0;  // band-passed contrast over the photo's (1 the same)
+  double figure = 0;    // correlation of the ring figure's light and dark bands with the photo's
 };
 
 struct TextureScore {

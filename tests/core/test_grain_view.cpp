@@ -1,6 +1,7 @@
 // What a woodworker sees first (texture/grain_view.hpp): grain direction agreement and contrast against
 // a photo, on images whose answer is known analytically, and in the texture objective on the synthetic
 // block: a render whose detail is washed out scores worse there than the true wood with other pores.
+// Scales follow the image's px/mm (the synthetic photos have 12.8, the yardstick's 6.4).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,7 +54,20 @@ TEST(GrainView, ContrastIsTheRatioOfTheBandPassedSpread) {
   EXPECT_THROW(grainAgreement(grainViewOf(lines(64, 9.0, 0.2, 0)), photo), InputError);
 }
 
-TEST(GrainView, TheObjectiveSeesAWashedOutFigure) {
+TEST(GrainView, FigureCorrelationSeesWhereTheBandsLie) {
+  // Bands 24 px apart (3.75 mm at the photos' 6.4 px/mm): the ring figure's scale.
+  const GrainView photo = grainViewOf(lines(96, 24.0, 0.2, 30));
+  EXPECT_NEAR(figureCorrelation(grainViewOf(lines(96, 24.0, 0.1, 30)), photo), 1.0, 1e-3);
+  // The same bands half a period off: light where the photo is dark.
+  Image shifted = lines(128, 24.0, 0.2, 0), reference = lines(128, 24.0, 0.2, 0);
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x)
+      for (int c = 0; c < 3; ++c) shifted.pixel(x, y)[c] = reference.pixel((x + 12) % 128, y)[c];
+  EXPECT_LT(figureCorrelation(grainViewOf(shifted), grainViewOf(reference)), -0.9);
+  EXPECT_NEAR(figureCorrelation(grainViewOf(lines(96, 24.0, 0.0, 30)), photo), 0.0, 1e-6);
+}
+
+TEST(GrainView, TheObjectiveScoresWashedOutDetailWorse) {
   const test::TextureSynthetic& s = test::textureSynthetic();
   const TextureObjective objective(s.truth.block, s.rates, s.truth.params, s.photos);
   WoodParameters washed = s.sameWoodOtherSeed();
@@ -68,10 +82,10 @@ TEST(GrainView, TheObjectiveSeesAWashedOutFigure) {
     // Other pores and rays than the photo's, the same wood: near the photo's contrast and grain.
     EXPECT_NEAR(truth.faces[i].contrast, 1.0, 0.25);
     EXPECT_GT(truth.faces[i].grain, 0.5);
-    // Without pores, rays and fibres only the rings are left: less contrast on the long grain. (On the
-    // end grain B, D of this block the 1 mm band is the dense rings' own: 1.02 against 1.00 measured;
-    // on the quarter-sawn C, E 0.96-0.97 against 0.99-1.00.)
-    if (objective.orientations()[i].grain != FaceGrain::EndGrain)
-      EXPECT_LT(flat.faces[i].contrast, truth.faces[i].contrast);
+    EXPECT_GT(truth.faces[i].figure, 0.5);
+    // Without pores, rays and fibres only the rings are left. At the grain view's 1 mm scales the dense
+    // rings of this block carry most of the contrast (the washed-out faces measured 0.96-1.05 of the
+    // truth's), so here the detail shows in the style distance.
+    EXPECT_GT(flat.faces[i].style, truth.faces[i].style);
   }
 }
