@@ -160,6 +160,11 @@ TEST_F(WorkBudgets, RgbaPhotoIsReadWithOneFloatCopy) {
   const double grewKiB = double(values[1] - values[0]);
   std::printf("reading the %d x %d RGBA PNG grew the peak by %.0f MiB (one RGB float copy: %.0f MiB)\n", kSide,
               kSide, grewKiB / 1024, rgbCopyKiB / 1024);
+#if defined(__SANITIZE_ADDRESS__)
+  // ASan keeps freed blocks in quarantine (256 MB by default), so the decoder's freed row buffers stay
+  // resident: the peak says nothing about the read here. The Release build checks it.
+  GTEST_SKIP() << "the peak memory of a read is not measurable under AddressSanitizer (quarantine)";
+#endif
   EXPECT_LT(grewKiB, 1.5 * rgbCopyKiB) << "reading took " << grewKiB / 1024 << " MiB beyond the "
                                        << values[0] / 1024 << " MiB held before; one RGB copy is "
                                        << rgbCopyKiB / 1024 << " MiB";
