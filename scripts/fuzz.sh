@@ -13,7 +13,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${KERF_FUZZ_SECONDS:-300}"
-all=(fuzz_project fuzz_sample_folder fuzz_mokume_images fuzz_contours fuzz_log_json fuzz_log_maps)
+all=(fuzz_project fuzz_sample_folder fuzz_mokume_images fuzz_contours fuzz_log_json fuzz_log_maps fuzz_cli_arguments)
 [ $# -gt 0 ] && targets=("$@") || targets=("${all[@]}")
 
 if ! command -v clang++ >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then

@@ -48,6 +48,13 @@ Command addDetectCommand(CLI::App& app) {
         if (!project.heldOutFaces.empty())
           std::printf("held out (the project's held_out_faces): %s, not detected\n",
                       project.heldOutFaces.letters().c_str());
+        // Sizes from the headers first: a photo too big to detect on is refused before any is decoded.
+        for (FaceId face : faces) {
+          const fs::path& photo = project.facePhotos[faceIndex(face)];
+          const glm::ivec2 size = readImageSize(photo);
+          checkRingDetectionSize(size.x, size.y, "face " + std::string(1, faceLetter(face)) + " photo " +
+                                                     photo.string());
+        }
         std::array<Image, 6> photos;
         for (FaceId face : faces) photos[faceIndex(face)] = readImage(project.facePhotos[faceIndex(face)]);
         createOutputFolder(o->out);

@@ -35,10 +35,23 @@ CLI::Validator checkedNumber(T min, T max) {
 // add_option for a number `target` of any arithmetic type, accepted only in [min, max].
 template <class T, class Bound = T>
 CLI::Option* addNumber(CLI::App* app, const std::string& name, T& target, const std::string& description,
-                       Bound min = std::numeric_limits<T>::lowest(), Bound max = std::numeric_limits<T>::max()) {
+                       Bound min, Bound max) {
   static_assert(std::is_arithmetic_v<T>, "addNumber is for numbers");
   return app->add_option(name, target, description)
       ->check(checkedNumber<T>(static_cast<T>(min), static_cast<T>(max)));
+}
+// ... in [min, the largest T]. (Not a default argument of the above: with an int `min` for a float
+// option, Bound is int and FLT_MAX converted to int is undefined behaviour; fuzz_cli_arguments found it.)
+template <class T, class Bound = T>
+CLI::Option* addNumber(CLI::App* app, const std::string& name, T& target, const std::string& description,
+                       Bound min) {
+  return addNumber<T, T>(app, name, target, description, static_cast<T>(min), std::numeric_limits<T>::max());
+}
+// ... any value of T.
+template <class T>
+CLI::Option* addNumber(CLI::App* app, const std::string& name, T& target, const std::string& description) {
+  return addNumber<T, T>(app, name, target, description, std::numeric_limits<T>::lowest(),
+                         std::numeric_limits<T>::max());
 }
 
 // A length, scale or resolution: finite and above zero.

@@ -20,6 +20,9 @@ void validate(const BlockKnot& knot, const std::string& what) {
 
 BlockKnots::BlockKnots(std::vector<BlockKnot> knots, const KnotSettings& settings, float ringWidthMm)
     : knots_(std::move(knots)), settings_(settings), ringWidth_(ringWidthMm) {
+  if (knots_.size() > kMaxBlockKnots)
+    throw InputError("the block has " + std::to_string(knots_.size()) + " knots; Kerf takes at most " +
+                     std::to_string(kMaxBlockKnots) + " knots in a block");
   for (std::size_t i = 0; i < knots_.size(); ++i) {
     validate(knots_[i], "knots[" + std::to_string(i) + "]");
     knots_[i].direction = glm::normalize(knots_[i].direction);

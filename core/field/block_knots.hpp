@@ -33,6 +33,10 @@ struct BlockKnot {
   bool operator==(const BlockKnot&) const = default;
 };
 
+// The most knots a block may hold (issue 21): every knot is evaluated at every pixel and sample of the
+// block (no culling), so the work of a render grows with pixels x knots. A block has a handful of knots.
+inline constexpr std::size_t kMaxBlockKnots = 1'000;
+
 // Throws InputError naming `what` (e.g. "knots[1]") for a non-finite or zero direction, or a speed
 // outside (0, 1).
 void validate(const BlockKnot& knot, const std::string& what);

@@ -122,7 +122,16 @@ glm::vec3 WoodColorMap::at(float t) const {
   return colors[i] + f * (colors[j] - colors[i]);
 }
 
+void checkLogKnotCount(std::size_t count, const std::string& where) {
+  if (count <= kMaxLogKnots) return;
+  throw InputError(where + " holds " + std::to_string(count) + " knots; Kerf takes at most " +
+                   std::to_string(kMaxLogKnots) +
+                   " knots in a log (each needs 32 KiB of noise tables and is tested at every pixel it may "
+                   "reach)");
+}
+
 void validate(const LogModel& log) {
+  checkLogKnotCount(log.knots.size(), "log");
   const Stem& s = log.stem;
   if (!(s.heightStep > 0.0f) || !std::isfinite(s.heightStep))
     throw InputError("log: the slice spacing must be > 0");

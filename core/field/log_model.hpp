@@ -72,6 +72,14 @@ struct LogModel {
 // Checks sizes, finiteness and that every knot starts inside the stem; throws InputError naming the knot.
 void validate(const LogModel& log);
 
+// The most knots a log may hold (issue 21: a 10 MB log of 100k knots needed 3.4 GB). Each knot keeps two
+// 64 x 64 noise tables (32 KiB, field/knot_field.hpp) and is culled at every pixel it may reach; the
+// Gran_1 spruce log has 108 knots. 10000 knots take 320 MiB of tables.
+inline constexpr std::size_t kMaxLogKnots = 10'000;
+// Throws InputError naming `where` (the file) unless `count` knots are within kMaxLogKnots. The readers
+// call it before they build a knot; validate(log) again for logs made otherwise.
+void checkLogKnotCount(std::size_t count, const std::string& where);
+
 // A plausible random spruce-like log (deterministic for a seed): a gently curved pith, a tapering
 // slightly out-of-round stem, knots in whorls every `whorlSpacing` mm with branches rising and twisting a
 // little, knots dying (alive-to-dead transition) at a random distance that is smaller low in the log.

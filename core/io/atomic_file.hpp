@@ -9,12 +9,13 @@ namespace kerf {
 
 // Calls write(temporaryPath); on success renames the temporary file to `target`, on any exception
 // removes it and rethrows. The temporary file keeps the target's extension (some writers need it), is
-// hidden (".NAME.tmpPID-N.EXT"), and is removed by the next write of the same target if a kill left it.
+// hidden (".NAME.tmpPID-N.EXT"); if a kill leaves it, the next write into the same folder (of any file)
+// removes it, as every temporary there whose process PID no longer exists.
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path& temporary)>& write);
 
 // The temporary file writeFileAtomically uses, for writers that stream into it themselves and rename it
-// when done (NRRD volumes); removes a killed writer's leftover of the same target first. Throws InputError
+// when done (NRRD volumes); removes killed writers' leftovers in the target's folder first. Throws InputError
 // when the target's folder does not exist, or the output guard (io/output_guard.hpp) refuses it.
 std::filesystem::path temporaryFileFor(const std::filesystem::path& target);
 

@@ -35,6 +35,9 @@ json blockKnotsToJson(const std::vector<BlockKnot>& knots) {
 
 std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
   if (!in.is_array()) throw InputError("knots must be a list of knots, got " + describeJson(in));
+  if (in.size() > kMaxBlockKnots)  // every knot is evaluated at every pixel (field/block_knots.hpp)
+    throw InputError("knots holds " + std::to_string(in.size()) + " knots; Kerf takes at most " +
+                     std::to_string(kMaxBlockKnots) + " knots in a block (each is evaluated at every pixel)");
   std::vector<BlockKnot> knots;
   for (std::size_t i = 0; i < in.size(); ++i) {
     const std::string what = "knots[" + std::to_string(i) + "]";

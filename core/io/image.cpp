@@ -66,33 +66,51 @@ Image readImage(const std::filesystem::path& path, bool keepChannels) {
                      " channels; Kerf reads grey, RGB and RGBA images");
   }
   if (std::string(in->format_name()) == "png") checkPngComplete(path);
-  Image raw(spec.width, spec.height, spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.pixels.data())) {
-    throw InputError("cannot decode image " + path.string() + ": " + in->geterror());
-  }
+  // One float copy of the image is all a read takes: an image with other than 3 channels is decoded a
+  // strip of rows at a time into the RGB result (a 10950 x 10950 RGBA PNG took 3.4 GB as an RGBA copy
+  // and an RGB copy, now 1.4 GB). That copy must fit the memory budget, checked before it is taken.
+  const int channels = keepChannels ? spec.nchannels : 3;
+  checkImageReadMemory(path.string(), spec.width, spec.height, channels);
+  Image out(spec.width, spec.height, channels);
+  std::size_t nonFinite = 0;
   // Float TIFF and EXR photos can hold NaN or infinity; one such pixel spreads through every filter and
   // fit that reads it (it crashed detect). Refused, naming how many, rather than guessed at.
-  std::size_t nonFinite = 0;
-  for (std::size_t p = 0; p < raw.pixels.size(); p += spec.nchannels)
-    for (int c = 0; c < spec.nchannels; ++c)
-      if (!std::isfinite(raw.pixels[p + c])) {
-        ++nonFinite;
-        break;
+  const auto countNonFinite = [&](const std::vector<float>& values) {
+    for (std::size_t p = 0; p < values.size(); p += spec.nchannels)
+      for (int c = 0; c < spec.nchannels; ++c)
+        if (!std::isfinite(values[p + c])) {
+          ++nonFinite;
+          break;
+        }
+  };
+  if (channels == spec.nchannels) {
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out.pixels.data()))
+      throw InputError("cannot decode image " + path.string() + ": " + in->geterror());
+    countNonFinite(out.pixels);
+  } else {
+    constexpr int kStripRows = 64;
+    std::vector<float> strip;
+    for (int row = 0; row < spec.height; row += kStripRows) {
+      const int rows = std::min(kStripRows, spec.height - row);
+      strip.resize(static_cast<std::size_t>(rows) * spec.width * spec.nchannels);
+      if (!in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, spec.z, 0, spec.nchannels,
+                              OIIO::TypeDesc::FLOAT, strip.data()))
+        throw InputError("cannot decode image " + path.string() + ": " + in->geterror());
+      countNonFinite(strip);
+      // Grey is replicated into R, G and B; alpha and any further channel are dropped.
+      for (std::size_t p = 0; p < static_cast<std::size_t>(rows) * spec.width; ++p) {
+        const float* from = &strip[p * spec.nchannels];
+        float* to = out.pixel(0, row) + p * 3;
+        for (int c = 0; c < 3; ++c) to[c] = from[spec.nchannels >= 3 ? c : 0];
       }
+    }
+  }
   if (nonFinite > 0) {
     throw InputError("image " + path.string() + " has " + std::to_string(nonFinite) +
                      (nonFinite == 1 ? " pixel that is not a finite number" : " pixels that are not finite numbers") +
                      " (NaN or infinity); save it again without them");
   }
-  if (keepChannels || spec.nchannels == 3) return raw;
-  Image rgb(spec.width, spec.height, 3);
-  for (int y = 0; y < spec.height; ++y)
-    for (int x = 0; x < spec.width; ++x) {
-      const float* s = raw.pixel(x, y);
-      float* d = rgb.pixel(x, y);
-      for (int c = 0; c < 3; ++c) d[c] = s[spec.nchannels >= 3 ? c : 0];
-    }
-  return rgb;
+  return out;
 }
 
 void writeImage(const std::filesystem::path& path, const Image& image, int bits) {

@@ -155,7 +155,7 @@ LogModel importGranJson(const fs::path& folder, const LogImportOptions& options)
 
   // Knots, one row of 9 per knot [A, B, C, D, E, F, G, H, I] (Groenlund et al.; PEER_SHADERS.md A.3):
   // start height C, vertical course D sqrt(d) + E d, azimuth F + G ln d, broken off at H, dead from I.
-  array(knots, knotsPath.string());
+  checkLogKnotCount(array(knots, knotsPath.string()).size(), knotsPath.string());
   const float step = mapDistanceStep(rmax);
   for (std::size_t k = 0; k < knots.size(); ++k) {
     const std::string what = knotsPath.string() + " knot " + std::to_string(k);
@@ -192,8 +192,9 @@ LogModel importGranMaps(const fs::path& folder) {
   const float rmin = number(params[0], paramsPath.string() + " rmin"),
               rmax = number(params[1], paramsPath.string() + " rmax"),
               hmax = number(params[2], paramsPath.string() + " hmax");
-  // At most one knot per 4 rows of a knot map that OpenImageIO could read.
-  const int count = kerf::count(params[3], paramsPath.string() + " knot count", 0, 1 << 24);
+  // The knot budget of every log (field/log_model.hpp), before any knot map row is read.
+  const int count =
+      kerf::count(params[3], paramsPath.string() + " knot count", 0, static_cast<int>(kMaxLogKnots));
   if (!(rmin > 0.0f) || !(rmax > rmin) || !(hmax > 0.0f)) {
     throw InputError(paramsPath.string() + " must hold [rmin > 0, rmax > rmin, hmax > 0, knots >= 0]");
   }
@@ -363,7 +364,8 @@ LogModel logFromJson(const json& in, const std::string& where) {
   }
   log.stem.radii = readFloats(stem.value("radii_mm", json()), where + ": stem.radii_mm");
   const json knots = in.value("knots", json::array());
-  for (std::size_t k = 0; k < array(knots, where + ": knots").size(); ++k) {
+  checkLogKnotCount(array(knots, where + ": knots").size(), where);
+  for (std::size_t k = 0; k < knots.size(); ++k) {
     const json& j = knots[k];
     const std::string what = where + ": knot " + std::to_string(k);
     if (!j.is_object()) throw InputError(what + " must be an object");

@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "export/file_extension.hpp"
+#include "mesh/mesh_normals.hpp"
 #include "mesh/mesh_topology.hpp"
 #include "io/input_file.hpp"
 #include "util/error.hpp"
@@ -36,13 +37,17 @@ bool isMeshExtension(const std::string& e) {
 
 namespace {
 
+// Edges sharper than this stay sharp in the normals made for a mesh without them.
+constexpr float kSmoothingAngleDeg = 80.0f;
+
 glm::mat4 toGlm(const aiMatrix4x4& m) {
   // aiMatrix4x4 is row-major (a1..a4 is the first row); glm is column-major.
   return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4,
                    m.d4);
 }
 
-void appendMesh(Mesh& out, const aiMesh& in, const glm::mat4& transform) {
+// needsNormal: one flag per vertex appended, true where the file gave no normal.
+void appendMesh(Mesh& out, std::vector<bool>& needsNormal, const aiMesh& in, const glm::mat4& transform) {
   if (!(in.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;
   const auto base = static_cast<unsigned>(out.positions.size());
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transform)));
@@ -56,6 +61,7 @@ void appendMesh(Mesh& out, const aiMesh& in, const glm::mat4& transform) {
       if (glm::length(t) > 0.0f && std::isfinite(glm::length(t))) n = glm::normalize(t);
     }
     out.normals.push_back(n);
+    needsNormal.push_back(!in.HasNormals());
     // Texture coordinates are kept for information only (the bake makes its own atlas); assimp's v is
     // up, Kerf's is down.
     out.uvs.push_back(withUvs ? glm::vec2(in.mTextureCoords[0][i].x, 1.0f - in.mTextureCoords[0][i].y)
@@ -69,10 +75,13 @@ void appendMesh(Mesh& out, const aiMesh& in, const glm::mat4& transform) {
   }
 }
 
-void appendNode(Mesh& out, const aiScene& scene, const aiNode& node, const glm::mat4& parent) {
+void appendNode(Mesh& out, std::vector<bool>& needsNormal, const aiScene& scene, const aiNode& node,
+                const glm::mat4& parent) {
   const glm::mat4 transform = parent * toGlm(node.mTransformation);
-  for (unsigned i = 0; i < node.mNumMeshes; ++i) appendMesh(out, *scene.mMeshes[node.mMeshes[i]], transform);
-  for (unsigned i = 0; i < node.mNumChildren; ++i) appendNode(out, scene, *node.mChildren[i], transform);
+  for (unsigned i = 0; i < node.mNumMeshes; ++i)
+    appendMesh(out, needsNormal, *scene.mMeshes[node.mMeshes[i]], transform);
+  for (unsigned i = 0; i < node.mNumChildren; ++i)
+    appendNode(out, needsNormal, scene, *node.mChildren[i], transform);
 }
 
 }  // namespace
@@ -86,12 +95,11 @@ Mesh loadMesh(const std::filesystem::path& path) {
     throw InputError("cannot read mesh " + name + ": unknown format \"" + lowerExtension(path) +
                      "\" (use .obj, .stl or .ply)");
   Assimp::Importer importer;
-  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
-  // Points and lines are removed; polygons become triangles; missing normals are made.
+  // Points and lines are removed; polygons become triangles. Missing normals and shared vertices are
+  // made by smoothNormalsAndJoinVertices below, in linear time: assimp's GenSmoothNormals and
+  // JoinIdenticalVertices are quadratic in the triangles around one vertex (mesh_normals.hpp).
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(name, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_GenSmoothNormals |
-                                  aiProcess_JoinIdenticalVertices);
+  const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     std::string why = importer.GetErrorString();
     std::string lower = why;
@@ -104,11 +112,13 @@ Mesh loadMesh(const std::filesystem::path& path) {
   }
   Mesh mesh;
   mesh.name = path.filename().string();
-  appendNode(mesh, *scene, *scene->mRootNode, glm::mat4(1.0f));
+  std::vector<bool> needsNormal;
+  appendNode(mesh, needsNormal, *scene, *scene->mRootNode, glm::mat4(1.0f));
   if (mesh.triangles.empty()) throw InputError("mesh " + name + " has no faces (triangles or polygons)");
   for (const glm::vec3& p : mesh.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError("mesh " + name + " has a vertex with a coordinate that is not a number");
+  smoothNormalsAndJoinVertices(mesh, needsNormal, kSmoothingAngleDeg);
   // A non-manifold part has no inside and outside for the CNC planner, and the bake would texture its
   // internal faces: refuse it, saying where. Open meshes are only warned about (exportPart).
   if (const MeshTopology topology = meshTopology(mesh); topology.nonManifoldEdges > 0) {

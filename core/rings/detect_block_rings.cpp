@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "util/error.hpp"
 #include "util/resource_usage.hpp"
@@ -33,6 +34,18 @@ std::string BlockRingDetection::countsText() const {
   return text;
 }
 
+void checkRingDetectionSize(int width, int height, const std::string& what) {
+  const long long pixels = static_cast<long long>(width) * height;
+  if (pixels <= kMaxRingDetectionPixels) return;
+  std::ostringstream s;
+  s.precision(4);
+  s << what << " is " << width << " x " << height << " px (" << pixels / 1e6
+    << " megapixels); ring detection takes faces of up to " << kMaxRingDetectionPixels / 1e6
+    << " megapixels (its time grows faster than the pixel count): scale the photos down (Mokume's faces "
+       "are 256 px a side)";
+  throw InputError(s.str());
+}
+
 BlockRingDetection detectBlockRings(const std::array<Image, 6>& photos, const Block& block,
                                     const FaceSet& heldOut, const Progress& progress,
                                     const RingDetector& detector) {
@@ -44,6 +57,10 @@ BlockRingDetection detectBlockRings(const std::array<Image, 6>& photos, const Bl
                                      : "there are no face photos to detect rings on besides the held-out "
                                        "faces " +
                                            heldOut.letters());
+  for (FaceId face : faces) {
+    const Image& photo = photos[faceIndex(face)];
+    checkRingDetectionSize(photo.width, photo.height, std::string("the photo of face ") + faceLetter(face));
+  }
   BlockRingDetection detection;
   const double share = 1.0 / static_cast<double>(faces.size());
   for (std::size_t k = 0; k < faces.size(); ++k) {

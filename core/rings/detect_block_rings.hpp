@@ -35,9 +35,20 @@ struct BlockRingDetection {
   std::string countsText() const;  // "A:10 B:19 ..", the detected faces only
 };
 
+// The largest face photo ring detection takes (issue 21: six 120-megapixel grey faces kept detect busy for
+// minutes). The detector's filters are sized in mm on the wood, so their cost per pixel grows with the
+// resolution: six faces took 2.8 s at 512 px, 19 s at 1024 px and 143 s at 2048 px a side (Release, the
+// shared 2-core machine of docs/reliability.md). 2 megapixels a face keeps six faces to about a minute
+// there; Mokume's faces are 256 px.
+inline constexpr long long kMaxRingDetectionPixels = 2'000'000;
+// Throws InputError naming `what` (a photo's file, or "the photo of face A"), its size and the budget
+// unless a width x height photo is within kMaxRingDetectionPixels.
+void checkRingDetectionSize(int width, int height, const std::string& what);
+
 // Detects the rings on each face photo (A..F; empty photos are skipped) except the held-out faces (their
 // photos are used by nothing: fit/held_out_faces.hpp). Progress is shared evenly among the faces.
-// InputError when no photo is left to detect on; Cancelled on request.
+// InputError when no photo is left to detect on or one is over kMaxRingDetectionPixels (checked for every
+// face before any is detected); Cancelled on request.
 BlockRingDetection detectBlockRings(const std::array<Image, 6>& photos, const Block& block,
                                     const FaceSet& heldOut = {}, const Progress& progress = {},
                                     const RingDetector& detector = ClassicalRingDetector());

@@ -78,4 +78,18 @@ void checkMemoryNeed(std::uint64_t bytes, std::string_view what) {
                    " of memory; this machine lets Kerf use " + gib(usable) + ": lower the resolution");
 }
 
+void checkImageReadMemory(const std::string& file, int width, int height, int channels, std::uint64_t usable) {
+  const std::uint64_t pixels = std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0));
+  const std::uint64_t need = pixels * std::uint64_t(std::max(channels, 1)) * sizeof(float);
+  const std::uint64_t budget = usable / 10 * 8;
+  if (need <= budget) return;
+  std::ostringstream s;
+  s.precision(4);
+  s << "image " << file << " is " << width << " x " << height << " px (" << pixels / 1e6
+    << " megapixels): reading it takes " << gib(need) << " of memory (" << channels
+    << " float channels a pixel) and Kerf's budget for it is " << gib(budget) << " (80 % of the "
+    << gib(usable) << " this machine lets Kerf use); scale the image down first";
+  throw InputError(s.str());
+}
+
 }  // namespace kerf

@@ -5,6 +5,7 @@
 // InputError before any of that memory is taken, saying what was asked and what the bound allows.
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <string>
 #include <string_view>
 
 namespace kerf {
@@ -32,5 +33,10 @@ std::uint64_t usableMemoryBytes();
 // Throws when `bytes` exceed 80 % of usableMemoryBytes(), so that a big request fails with a message
 // instead of swapping the machine or being killed. `what` names the request ("the VDB volume").
 void checkMemoryNeed(std::uint64_t bytes, std::string_view what);
+
+// Throws, naming `file`, its size in pixels and the budget, unless one float copy of a width x height
+// image of `channels` channels (what io/image.cpp's readImage takes) fits 80 % of `usable` bytes.
+void checkImageReadMemory(const std::string& file, int width, int height, int channels,
+                          std::uint64_t usable = usableMemoryBytes());
 
 }  // namespace kerf

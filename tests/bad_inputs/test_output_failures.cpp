@@ -119,19 +119,45 @@ TEST(OutputFailures, CliReportsAFullDisk) {
 }
 
 TEST(OutputFailures, TemporaryLeftByAKilledWriterIsRemovedByTheNextWrite) {
-  // A writer killed mid-write leaves its hidden temporary; the next write of the same target removes it
-  // when its process is gone (a pid above Linux's pid_max never exists), and leaves a live writer's.
+  // A writer killed mid-write leaves its hidden temporary; the next write into the same folder, of any
+  // file, removes every temporary whose process is gone (a pid above Linux's pid_max never exists), and
+  // leaves a live writer's and names that only look alike (issue 21).
   const fs::path dir = folder("killed_writer");
   const fs::path dead = dir / ".block.tmp999999999-0.kerf",
                  live = dir / (".block.tmp" + std::to_string(::getppid()) + "-3.kerf");
-  const fs::path other = dir / ".other.tmp999999999-0.kerf", notOurs = dir / ".block.tmpnotes.kerf";
-  for (const fs::path& p : {dead, live, other, notOurs}) writeText(p, "partial");
+  const fs::path other = dir / ".other.tmp999999999-0.kerf", noExtension = dir / ".log.tmp999999999-12";
+  const fs::path staging = dir / ".detect.tmp999999999-1";  // a killed detect's staging folder
+  const fs::path notOurs = dir / ".block.tmpnotes.kerf", visible = dir / "block.tmp999999999-0.kerf",
+                 trailing = dir / ".block.tmp999999999-0x";
+  for (const fs::path& p : {dead, live, other, noExtension, notOurs, visible, trailing}) writeText(p, "partial");
+  fs::create_directories(staging);
+  writeText(staging / "A_arl.png", "partial");
   writeTextAtomically(dir / "block.kerf", "{}");
   EXPECT_FALSE(fs::exists(dead));
   EXPECT_TRUE(fs::exists(live));
-  EXPECT_TRUE(fs::exists(other));  // another target's: its own next write removes it
+  EXPECT_FALSE(fs::exists(other));  // another target's, in the same folder
+  EXPECT_FALSE(fs::exists(noExtension));
+  EXPECT_FALSE(fs::exists(staging));
   EXPECT_TRUE(fs::exists(notOurs));
+  EXPECT_TRUE(fs::exists(visible));
+  EXPECT_TRUE(fs::exists(trailing));
   EXPECT_EQ(readBytes(dir / "block.kerf"), "{}");
+}
+
+TEST(OutputFailures, KilledVolumeExportsTemporaryIsRemovedByTheNextExportIntoTheFolder) {
+  // The issue's example: a kill during export-volume left a 50 MB hidden temporary until the next write
+  // of that same file. Simulated with a sparse 50 MB file of a process that does not exist; exporting
+  // a face image into the same folder removes it.
+  const fs::path dir = folder("killed_volume_export");
+  saveProject(Project(), dir / "block.kerf");
+  const fs::path stale = dir / ".growth.tmp999999999-0.nrrd";
+  writeText(stale, "NRRD0004\n");
+  fs::resize_file(stale, 50u << 20);
+  const CliResult r = runCli("export " + (dir / "block.kerf").string() + " --face A --px-per-mm 1 --out " +
+                             (dir / "A.png").string());
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(dir / "A.png"));
 }
 
 TEST(OutputFailures, ReadOnlyFolder) {

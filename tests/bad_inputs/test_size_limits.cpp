@@ -10,7 +10,7 @@
 #include "bad_input_files.hpp"
 #include "geometry/block.hpp"
 #include "io/project.hpp"
-#include "run_cli.hpp"
+#include "refused_run.hpp"
 #include "util/error.hpp"
 #include "util/size_limits.hpp"
 
@@ -19,9 +19,6 @@ using namespace kerf::bad;
 
 namespace {
 
-// Far more than any refused request may take: the project and the program, not the image (at 400 px/mm a
-// face alone is 3 GB).
-constexpr long kMaxPeakKiB = 400 * 1024;
 
 class SizeLimits : public ::testing::Test {
  protected:
@@ -42,17 +39,7 @@ class SizeLimits : public ::testing::Test {
   }
   // kerf-cli refuses, quickly and without taking the memory, with a message matching `problem`.
   void expectRefused(const std::string& arguments, const std::string& problem) {
-    const CliResult r = runCli(args(arguments));
-    EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("kerf-cli: error: "), std::string::npos) << r.output;
-    EXPECT_TRUE(std::regex_search(r.output, std::regex(problem))) << r.output;
-    // Linux counts the spawning process's own peak in the child's (exec keeps the old image's high-water
-    // mark), so the bound is on top of this test's peak: small when ctest runs the test alone.
-    rusage self{};
-    ::getrusage(RUSAGE_SELF, &self);
-    EXPECT_LT(r.peakRssKiB, self.ru_maxrss + kMaxPeakKiB)
-        << "peak memory " << r.peakRssKiB / 1024 << " MiB (this test: " << self.ru_maxrss / 1024 << " MiB)";
-    EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "kerf-cli wrote output for a refused size";
+    expectRefusedAtOnce(runCli(args(arguments)), problem, dir_ / "out");
   }
   fs::path dir_;
 };

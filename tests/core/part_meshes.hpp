@@ -33,6 +33,23 @@ inline std::filesystem::path writeBoxesObj(const std::filesystem::path& path,
   return path;
 }
 
+// A closed cone (issue 21): its apex at (0, 0, height) and the centre of its base at the origin are each
+// on `sides` triangles, so one vertex has a valence that grows with the mesh. OBJ, no normals.
+inline std::filesystem::path writeConeObj(const std::filesystem::path& path, float radius, float height,
+                                          int sides) {
+  std::ofstream f(path);
+  f << "v 0 0 " << height << "\nv 0 0 0\n";
+  for (int i = 0; i < sides; ++i) {
+    const double a = 2.0 * M_PI * i / sides;
+    f << "v " << radius * std::cos(a) << ' ' << radius * std::sin(a) << " 0\n";
+  }
+  for (int i = 0; i < sides; ++i) {
+    const int here = i + 3, next = (i + 1) % sides + 3;  // the last side closes exactly
+    f << "f 1 " << here << ' ' << next << "\nf 2 " << next << ' ' << here << '\n';
+  }
+  return path;
+}
+
 // A box [-h, h] around the origin (h = size / 2).
 inline std::filesystem::path writeBoxObj(const std::filesystem::path& path, glm::vec3 size) {
   return writeBoxesObj(path, {{-0.5f * size, 0.5f * size}});

@@ -2,6 +2,7 @@
 // fit check (core/mesh/).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <glm/glm.hpp>
 
@@ -117,6 +118,49 @@ TEST(MeshTopology, BoxWithoutItsTopHasFourOpenEdges) {
   EXPECT_EQ(t.nonManifoldEdges, 0u);
   EXPECT_NE(t.describeOpen().find("4 open edges (a hole or a surface, e.g. at "), std::string::npos)
       << t.describeOpen();
+}
+
+// Issue 21: assimp's normal generation and vertex joining were quadratic in the triangles around one
+// vertex (an 80k-triangle cone took 32-41 s to load). The loader now does both itself by hashing; this
+// checks the result on a cone whose apex and base centre are each on 10000 triangles. (Its load time is
+// in kerf_bench, BM_LoadClosedCone: a test's verdict never depends on time.)
+TEST(MeshLoad, HighValenceConeGetsSmoothSidesASharpRimAndSharedVertices) {
+  constexpr int kSides = 10000;
+  constexpr float kRadius = 10.0f, kHeight = 30.0f;
+  const Mesh m = loadMesh(kerf::testing::writeConeObj(folder("cone") / "cone.obj", kRadius, kHeight, kSides));
+  ASSERT_EQ(m.triangles.size(), 2u * kSides);
+  // The apex and the base centre become one vertex each; every rim point two (its side normal and the
+  // base's: the rim's 108-degree edge is sharper than the 80-degree smoothing limit).
+  EXPECT_EQ(m.positions.size(), 2u * kSides + 2);
+  ASSERT_TRUE(m.hasNormals());
+  const MeshTopology topology = meshTopology(m);
+  EXPECT_TRUE(topology.closed());
+  EXPECT_EQ(topology.nonManifoldEdges, 0u);
+  const double polygonArea = 0.5 * kSides * kRadius * kRadius * std::sin(2.0 * M_PI / kSides);
+  EXPECT_NEAR(volume(m), polygonArea * kHeight / 3.0, 1e-3 * polygonArea * kHeight);
+  const glm::vec3 side = glm::normalize(glm::vec3(kHeight, 0.0f, kRadius));  // the side's normal at +x
+  std::size_t apex = 0, base = 0, rimSide = 0;
+  for (std::size_t v = 0; v < m.positions.size(); ++v) {
+    const glm::vec3 p = m.positions[v], n = m.normals[v];
+    ASSERT_NEAR(glm::length(n), 1.0f, 1e-4f);
+    if (p == glm::vec3(0, 0, kHeight)) {
+      ++apex;
+      EXPECT_GT(n.z, 0.999f);  // the mean of the sides around the tip
+    } else if (p == glm::vec3(0.0f)) {
+      ++base;
+      EXPECT_LT(n.z, -0.999f);
+    } else if (n.z > 0.0f) {
+      ++rimSide;  // a rim point's side normal: tilted out as the cone's side is
+      const float azimuth = std::atan2(p.y, p.x);
+      const glm::vec3 expected(side.x * std::cos(azimuth), side.x * std::sin(azimuth), side.z);
+      EXPECT_GT(glm::dot(n, expected), 0.9999f);
+    } else {
+      EXPECT_LT(n.z, -0.999f);  // a rim point's base normal
+    }
+  }
+  EXPECT_EQ(apex, 1u);
+  EXPECT_EQ(base, 1u);
+  EXPECT_EQ(rimSide, static_cast<std::size_t>(kSides));
 }
 
 TEST(MeshLoad, NonManifoldMeshIsRefusedSayingWhere) {
