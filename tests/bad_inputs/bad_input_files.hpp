@@ -1,6 +1,8 @@
 #pragma once
 // Makers of bad input files for the catalogue (test_bad_inputs.cpp): each writes a small file (a few KB
 // at most) that is broken in one precise way. Nothing here is checked in; every file is made by the test.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -16,6 +18,16 @@ namespace kerf::bad {
 namespace fs = std::filesystem;
 
 // The message of the InputError `run` throws, or "" when it throws none (anything else fails the test).
+// An empty folder for the running test: KERF_TEST_ARTIFACTS/suite/test name (with `sub` inside, when
+// given), emptied first so that no earlier run's files count.
+inline fs::path freshTestFolder(const std::string& suite, const std::string& sub = "") {
+  const fs::path dir =
+      fs::path(KERF_TEST_ARTIFACTS) / suite / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::remove_all(dir);
+  fs::create_directories(sub.empty() ? dir : dir / sub);
+  return dir;
+}
+
 inline std::string errorOf(const std::function<void()>& run) {
   try {
     run();

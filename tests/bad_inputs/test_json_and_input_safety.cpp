@@ -36,10 +36,7 @@ std::size_t lengthBesidePaths(const std::string& text, const fs::path& folder) {
 class SafeInputs : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(KERF_TEST_ARTIFACTS) / "safe_inputs" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = freshTestFolder("safe_inputs");
   }
   // kerf-cli exits with code 2, its message matches `problem`, and `out` was not written.
   void expectCliRefuses(const std::string& arguments, const std::string& problem, const fs::path& out) {

@@ -23,10 +23,7 @@ namespace {
 class OutputGuard : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(KERF_TEST_ARTIFACTS) / "output_guard" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = freshTestFolder("output_guard");
   }
   // kerf-cli exits with code 2 naming the problem, and the folder holds what it held before, byte for
   // byte, and no temporary.

@@ -23,10 +23,7 @@ namespace {
 class SizeLimits : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(KERF_TEST_ARTIFACTS) / "size_limits" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "out");
+    dir_ = freshTestFolder("size_limits", "out");
     saveProject(Project(), project());  // a 40 mm cube
   }
   fs::path project() const { return dir_ / "block.kerf"; }

@@ -64,10 +64,7 @@ void writePng(const fs::path& path, int width, int height, int channels,
 class WorkBudgets : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(KERF_TEST_ARTIFACTS) / "work_budgets" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "out");
+    dir_ = freshTestFolder("work_budgets", "out");
   }
   void expectRefused(const std::string& arguments, const std::string& problem) {
     expectRefusedAtOnce(runCli(arguments), problem, dir_ / "out");
