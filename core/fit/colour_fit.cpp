@@ -1,5 +1,4 @@
 #include "fit/colour_fit.hpp"
-#include "model/wood_kernels.hpp"
 
 #include <ceres/ceres.h>
 #include <glm/exponential.hpp>
@@ -15,6 +14,7 @@
 #include <vector>
 
 #include "fit/ceres_progress.hpp"
+#include "fit/colour_bins.hpp"
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -23,96 +23,12 @@ namespace kerf {
 
 namespace {
 
-// The ring profile's eight knots, rings.season_shading and pores.darkness: the shading of the year and of
-// its pores, fitted together because the photos' per-bin spread holds both.
-constexpr int kProfileSize = 10;
-
-// What a sample point's colour depends on besides the fitted parameters (fixed during the fit). One
-// photo point and the model at that same point: averaging the photo over cells (as an earlier version
-// did) mixes earlywood and latewood and pulls the fit to one mean colour (issue 16).
-struct Sample {
-  int face = 0;
-  double pigment = 0;       // Beer's-law concentration t without the ring profile and the season
-  double season = 0;        // the season s (0 earlywood, 1 latewood), weighed by rings.season_shading
-  double year = 0, ray = 0;
-  // The pore weights over the photo pixel's footprint (3 x 3 points): a photo pixel averages a pore
-  // smaller than itself, a single model point does not, and that made the fit pale the pores (issue 16).
-  // Their shadow's darkness is fitted (profile[9]).
-  float pore[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-  double phase = 0;         // where in its year the point lies (0 at a ring boundary)
-  int profileKnot = 0;      // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
-  double profileWeight[4] = {0, 0, 0, 0};
-  double target[3] = {0, 0, 0};  // the photo's colour at the point
-};
-
-// The colour model of kernels/wood.glsl's evaluateWood as a function of the fitted parameters only.
-struct ColourModel {
-  const Sample* s;
-  glm::dvec3 rayColor;
-  double rayOpacity;
-  glm::dvec3 poreHue;  // pores.shadow_hue over its mean (kernels/wood.glsl poreShadeOf)
-
-  template <class T>
-  void operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
-                  const T* tint, const T* profile, T* out) const {
-    using std::exp;
-    using std::log;
-    T x = (T(s->year) - (sap[0] - 0.5 * sap[1])) / sap[1];
-    if (x < T(0)) x = T(0);
-    if (x > T(1)) x = T(1);
-    const T blend = x * x * (T(3) - T(2) * x);
-    // profile[0..7]: the ring profile's knots; profile[8]: rings.season_shading; profile[9]: pores.darkness.
-    T t = T(s->pigment) + profile[8] * s->season;
-    for (int i = 0; i < 4; ++i) t += s->profileWeight[i] * profile[(s->profileKnot + 7 + i) % 8];
-    const double w = rayOpacity * s->ray;
-    for (int c = 0; c < 3; ++c) {
-      T poreShade(0);  // kernels/wood.glsl's poreShadeOf, averaged over the pixel
-      for (float pore : s->pore)
-        poreShade += pore > 0.0f ? exp(-double(glsl::WoodKernels::kPoreShadow) * pore * poreHue[c] * profile[9])
-                                 : T(1);
-      poreShade /= 9.0;
-      const T e = early[c] + blend * (sapEarly[c] - early[c]);
-      const T l = late[c] + blend * (sapLate[c] - late[c]);
-      const T beer = e * exp(t * log(l / e)) * poreShade;
-      out[c] = tint[c] * ((1.0 - w) * beer + w * rayColor[c]);
-    }
-  }
-};
-
-// Per year-phase statistics (issue 16): over a bin of points - one face, one sixteenth of the year, one
-// band of five years - the model's mean colour and its spread of luminance against the photos' over the
-// same points. Point by point, the model's pores and the photo's never line up, and rings a fraction
-// of a millimetre off their photo disagree at every edge; the least-squares answer to both is to lower
-// the contrast until the faces are one beige. The bin means are what the model can and must match
-// point for point: the shade of each part of the year, from heart to sapwood, from face to face. The
-// spread within a bin is the contrast of the detail that cannot be aligned (pores, fibres, mottling):
-// by Beer's law it grows with the earlywood-latewood colour ratio, which the means alone leave free.
-struct BinResidual {
-  std::vector<const Sample*> members;
-  glm::dvec3 rayColor, poreHue;
-  double rayOpacity = 0, weight = 0, spreadWeight = 1;
-  double target[3] = {0, 0, 0};
-  double targetSpread = 0;  // standard deviation of the photo's luminance over the bin
-
-  template <class T>
-  bool operator()(const T* early, const T* late, const T* sapEarly, const T* sapLate, const T* sap,
-                  const T* tint, const T* profile, T* residual) const {
-    T sum[3] = {T(0), T(0), T(0)}, sumLuminance(0), sumLuminance2(0);
-    for (const Sample* s : members) {
-      T colour[3];
-      ColourModel{s, rayColor, rayOpacity, poreHue}(early, late, sapEarly, sapLate, sap, tint, profile, colour);
-      for (int c = 0; c < 3; ++c) sum[c] += colour[c];
-      const T y = 0.299 * colour[0] + 0.587 * colour[1] + 0.114 * colour[2];
-      sumLuminance += y, sumLuminance2 += y * y;
-    }
-    const double n = static_cast<double>(members.size());
-    for (int c = 0; c < 3; ++c) residual[c] = weight * (sum[c] / n - target[c]);
-    using std::sqrt;
-    const T variance = sumLuminance2 / n - (sumLuminance / n) * (sumLuminance / n);
-    residual[3] = weight * spreadWeight * (sqrt(variance + 1e-8) - targetSpread);
-    return true;
-  }
-};
+using colour_fit::Bin;
+using colour_fit::BinCost;
+using colour_fit::ColourConstants;
+using colour_fit::ColourModel;
+using colour_fit::kProfileSize;
+using colour_fit::Sample;
 
 // Beer's law: latewood, pores and every darker part of the wood hold more of one pigment, so the log
 // ratio log(L/E) per channel points along that pigment's absorption, which is the species'. The per-bin
@@ -330,13 +246,13 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   if (glm::all(glm::lessThan(direction, glm::dvec3(0.0))))
     shadowHue = glm::max(-direction / std::max({-direction.x, -direction.y, -direction.z}), glm::dvec3(0.05));
   const glm::dvec3 poreHue = glm::max(shadowHue, glm::dvec3(1e-3)) / ((shadowHue.x + shadowHue.y + shadowHue.z) / 3.0);
+  const ColourConstants constants{rayColor, params.rayOpacity, poreHue};
   const auto l1PerFace = [&](std::array<double, 6>& out) {
     std::array<double, 6> count{};
     out.fill(0.0);
     for (const Sample& s : samples) {
       double colour[3];
-      ColourModel{&s, rayColor, params.rayOpacity, poreHue}(early, late, sapEarly, sapLate, sap, tint[s.face], profile,
-                                                   colour);
+      ColourModel{&s, &constants}(early, late, sapEarly, sapLate, sap, tint[s.face], profile, colour);
       for (int c = 0; c < 3; ++c)
         out[s.face] += std::abs(std::clamp(colour[c], 0.0, 1.0) - s.target[c]) / 3.0;
       count[s.face] += 1;
@@ -349,10 +265,10 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     for (int c = 0; c < 3; ++c) sapEarly[c] = early[c], sapLate[c] = late[c];
 
   ceres::Problem problem;
-  std::map<std::tuple<int, int, int>, BinResidual> bins;  // (face, sixteenth of the year, 5-year band)
+  std::map<std::tuple<int, int, int>, Bin> bins;  // (face, sixteenth of the year, 5-year band)
   for (const Sample& s : samples) {
-    BinResidual& bin = bins[{s.face, std::min(15, static_cast<int>(16 * s.phase)),
-                             static_cast<int>(std::floor(s.year / 5.0))}];
+    Bin& bin = bins[{s.face, std::min(15, static_cast<int>(16 * s.phase)),
+                         static_cast<int>(std::floor(s.year / 5.0))}];
     bin.members.push_back(&s);
     for (int c = 0; c < 3; ++c) bin.target[c] += s.target[c];
     const double y = luminance(s.target);
@@ -363,12 +279,11 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     const double n = static_cast<double>(bin.members.size());
     for (double& t : bin.target) t /= n;
     bin.targetSpread = std::sqrt(std::max(0.0, bin.targetSpread / n - luminance(bin.target) * luminance(bin.target)));
-    bin.rayColor = rayColor, bin.poreHue = poreHue, bin.rayOpacity = params.rayOpacity, bin.spreadWeight = options.spreadWeight;
+    bin.constants = constants, bin.spreadWeight = options.spreadWeight;
     bin.weight = std::sqrt(n / static_cast<double>(samples.size()));
     const int face = std::get<0>(key);
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BinResidual, 4, 3, 3, 3, 3, 2, 3, kProfileSize>(
-                                 new BinResidual(std::move(bin))),
-                             nullptr, early, late, sapEarly, sapLate, sap, tint[face], profile);
+    problem.AddResidualBlock(new BinCost(std::move(bin)), nullptr, early, late, sapEarly, sapLate, sap, tint[face],
+                             profile);
   }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ProfilePrior, 16, kProfileSize>(
                                new ProfilePrior{options.profileSmoothness, options.profileSmallness}),
