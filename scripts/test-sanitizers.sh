@@ -38,6 +38,9 @@ cd build/asan
 # alone, so that no test's verdict depends on what runs beside it. Both passes run; either failing fails.
 status=0
 # The scripted walkthrough (label `walkthrough`, a whole CN03 reconstruction) runs in scripts/test.sh only.
-nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE 'timing|walkthrough' "$@" || status=1
+# The whole fits named in tests/sanitizer_heavy.txt (15-30x slower sanitized) run in scripts/test.sh only.
+heavy=$(sed -e 's/#.*//' -e 's/[[:space:]]//g' -e '/^$/d' -e 's/\./\\./g' "$root/tests/sanitizer_heavy.txt" | paste -sd '|')
+nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE 'timing|walkthrough' -E "^($heavy)\$" "$@" \
+  || status=1
 nice -n 19 ctest --output-on-failure --timeout 1800 -L timing --no-tests=ignore "$@" || status=1
 exit "$status"
