@@ -38,7 +38,7 @@ cd build/asan
 # alone, so that no test's verdict depends on what runs beside it. Both passes run; either failing fails.
 status=0
 # The scripted walkthrough (label `walkthrough`, a whole CN03 reconstruction) runs in scripts/test.sh only.
-# The whole fits named in tests/sanitizer_heavy.txt (15-30x slower sanitized) run in scripts/test.sh only.
+# The repeated whole fits named in tests/sanitizer_heavy.txt run in scripts/test.sh only (see there why).
 heavy=$(sed -e 's/#.*//' -e 's/[[:space:]]//g' -e '/^$/d' -e 's/\./\\./g' "$root/tests/sanitizer_heavy.txt" | paste -sd '|')
 nice -n 19 ctest --output-on-failure -j "$jobs" --timeout 1800 -LE 'timing|walkthrough' -E "^($heavy)\$" "$@" \
   || status=1
