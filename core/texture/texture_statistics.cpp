@@ -70,15 +70,29 @@ void orientedResponses(const cv::Mat& grey, float sigma, int orientations, std::
   }
 }
 
+// The values at the `count` quantiles (interpolated between neighbours), as a full sort gives them. Only
+// the ranks needed are put in place (nth_element from rank to rank): a full sort of every filter's
+// responses was 13 % of a texture search.
 std::vector<double> quantilesOf(std::vector<float>& values, int count) {
   std::vector<double> q(count, 0.0);
   if (values.empty()) return q;
-  std::sort(values.begin(), values.end());
+  // Ranks are asked for in non-decreasing order: each one asked so far is in its sorted place, and nothing
+  // before `placed` is greater than anything after it.
+  auto placed = values.begin();
+  const auto valueAt = [&](std::size_t rank) {
+    const auto at = values.begin() + static_cast<std::ptrdiff_t>(rank);
+    if (at >= placed) {
+      std::nth_element(placed, at, values.end());
+      placed = at + 1;
+    }
+    return double(*at);
+  };
   for (int k = 0; k < count; ++k) {
     const double at = (k + 0.5) / count * (values.size() - 1);
     const auto lo = static_cast<std::size_t>(at);
     const std::size_t hi = std::min(lo + 1, values.size() - 1);
-    q[k] = values[lo] + (at - lo) * (values[hi] - values[lo]);
+    const double low = valueAt(lo);
+    q[k] = low + (at - lo) * (valueAt(hi) - low);
   }
   return q;
 }
