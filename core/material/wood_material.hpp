@@ -19,6 +19,8 @@ namespace kerf {
 
 // year, latewood, pigment, pore, ray, color, fiberDirection: see core/model/kernels/wood.glsl.
 using WoodSample = glsl::WoodKernels::WoodSample;
+// Where a point lies in the tree (growth time, knot, undistorted frame): see kernels/wood.glsl.
+using WoodLocation = glsl::WoodKernels::WoodLocation;
 
 class WoodMaterial {
  public:
@@ -30,6 +32,14 @@ class WoodMaterial {
   // withFiberDirection, WoodSample::fiberDirection is the pith direction.
   WoodSample evaluate(glm::vec3 pMm, int faceIndex = -1, bool withFiberDirection = false) const {
     return kernels_.evaluateWood(pMm, faceIndex, withFiberDirection);
+  }
+  // evaluate() in two steps: locate() depends on the field and the parameters of its distortion only,
+  // so a location may be shaded again under other texture parameters (see kernels/wood.glsl).
+  WoodLocation locate(glm::vec3 pMm, bool withFiberDirection = false) const {
+    return kernels_.locateWood(pMm, withFiberDirection);
+  }
+  WoodSample shade(const WoodLocation& location, int faceIndex = -1) const {
+    return kernels_.shadeWood(location, faceIndex);
   }
   // Only the growth time at the (distorted) point: WoodSample::year without the texture's cost.
   float year(glm::vec3 pMm) const { return kernels_.woodYear(pMm); }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <stdexcept>
 
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
@@ -73,6 +74,38 @@ Image renderFaceCrop(const WoodModel& model, const FaceCrop& crop, glm::ivec2 im
           sum += model.evaluate(model.block().imageToBlock(crop.face, pos, imageSize), faceIndex(crop.face))
                      .color;
         }
+      float* q = out.pixel(x, y);
+      q[0] = sum.x * weight, q[1] = sum.y * weight, q[2] = sum.z * weight;
+    }
+  return out;
+}
+
+std::vector<WoodLocation> locateFaceCrop(const WoodModel& model, const FaceCrop& crop, glm::ivec2 imageSize,
+                                         int samples) {
+  std::vector<WoodLocation> out;
+  out.reserve(static_cast<std::size_t>(crop.width) * crop.height * samples * samples);
+  for (int y = 0; y < crop.height; ++y)
+    for (int x = 0; x < crop.width; ++x)
+      for (int sy = 0; sy < samples; ++sy)
+        for (int sx = 0; sx < samples; ++sx) {
+          const glm::vec2 pos(crop.x + x + (sx + 0.5f) / samples, crop.y + y + (sy + 0.5f) / samples);
+          out.push_back(model.material().locate(model.block().imageToBlock(crop.face, pos, imageSize)));
+        }
+  return out;
+}
+
+Image renderFaceCrop(const WoodModel& model, const FaceCrop& crop, const std::vector<WoodLocation>& located,
+                     int samples) {
+  if (located.size() != static_cast<std::size_t>(crop.width) * crop.height * samples * samples)
+    throw std::logic_error("renderFaceCrop: the locations are not of this crop");
+  Image out(crop.width, crop.height, 3);
+  const float weight = 1.0f / (samples * samples);
+  const int face = faceIndex(crop.face);
+  const WoodLocation* at = located.data();
+  for (int y = 0; y < crop.height; ++y)
+    for (int x = 0; x < crop.width; ++x) {
+      glm::vec3 sum(0.0f);
+      for (int i = 0; i < samples * samples; ++i) sum += model.material().shade(*at++, face).color;
       float* q = out.pixel(x, y);
       q[0] = sum.x * weight, q[1] = sum.y * weight, q[2] = sum.z * weight;
     }

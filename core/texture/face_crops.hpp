@@ -12,6 +12,7 @@
 #include "field/pith_axis.hpp"
 #include "geometry/block.hpp"
 #include "io/image.hpp"
+#include "material/wood_material.hpp"
 
 namespace kerf {
 
@@ -39,6 +40,16 @@ Image cropImage(const Image& image, const FaceCrop& crop);
 // The crop rendered from the model on the face image grid of imageSize, `samples` x `samples` points per
 // pixel (as renderFace). Single-threaded: the caller runs crops or candidates in parallel.
 Image renderFaceCrop(const WoodModel& model, const FaceCrop& crop, glm::ivec2 imageSize, int samples);
+
+// The same in two steps. locateFaceCrop: where each of the crop's points lies in the tree
+// (WoodMaterial::locate), pixel by pixel, `samples` x `samples` each. renderFaceCrop from them: the same
+// pixels as above for any model whose locations are these (the same field, distortion and knots; texture
+// parameters may differ). The texture search locates once and shades every candidate: locating is half
+// the cost of a point.
+std::vector<WoodLocation> locateFaceCrop(const WoodModel& model, const FaceCrop& crop, glm::ivec2 imageSize,
+                                         int samples);
+Image renderFaceCrop(const WoodModel& model, const FaceCrop& crop, const std::vector<WoodLocation>& located,
+                     int samples);
 
 // What a face shows of the wood, from its normal relative to the pith axis at the face centre.
 enum class FaceGrain { EndGrain, FlatSawn, QuarterSawn };

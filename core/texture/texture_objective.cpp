@@ -80,6 +80,21 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
       cropLabels_.push_back(
           ringPhaseLabels(model, crop, layout_.imageSize[faceIndex(crop.face)], options.ringPhaseBins));
   }
+  cropLocations_.resize(layout_.crops.size());
+  parallelRows(static_cast<int>(layout_.crops.size()), [&](int k) {
+    const FaceCrop& crop = layout_.crops[k];
+    cropLocations_[k] = locateFaceCrop(model, crop, layout_.imageSize[faceIndex(crop.face)], options.samples);
+  });
+  for (const FaceCrop& crop : layout_.crops) {  // the corners and the centre of every crop
+    const glm::ivec2 size = layout_.imageSize[faceIndex(crop.face)];
+    for (const glm::vec2 at : {glm::vec2(crop.x, crop.y), glm::vec2(crop.x + crop.width, crop.y),
+                               glm::vec2(crop.x, crop.y + crop.height),
+                               glm::vec2(crop.x + crop.width, crop.y + crop.height),
+                               glm::vec2(crop.x + 0.5f * crop.width, crop.y + 0.5f * crop.height)}) {
+      probes_.push_back(block.imageToBlock(crop.face, at, size));
+      probeLocations_.push_back(model.material().locate(probes_.back()));
+    }
+  }
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
     if (cropsOfFace_[i].empty()) continue;
@@ -92,6 +107,25 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
     photoStatistics_[i] = computeLabelledTextureStatistics(crops, labels, options.ringPhaseBins,
                                                            layout_.pxPerMm[i], options.statistics);
   }
+}
+
+// Whether the model puts the probe points exactly where the start parameters did: then it does so
+// everywhere (the texture parameters never move a point; the test TextureObjective.
+// ReusesLocationsOnlyWhereTheyHold checks the whole search space), and the stored crop locations hold.
+bool TextureObjective::sameLocations(const WoodModel& model) const {
+  for (std::size_t i = 0; i < probes_.size(); ++i) {
+    const WoodLocation a = model.material().locate(probes_[i]), &b = probeLocations_[i];
+    if (a.year != b.year || a.knotDarkness != b.knotDarkness || a.c.height != b.c.height ||
+        a.c.radius != b.c.radius || a.c.azimuth != b.c.azimuth || a.c.x != b.c.x || a.c.y != b.c.y)
+      return false;
+  }
+  return true;
+}
+
+Image TextureObjective::renderCrop(const WoodModel& model, bool located, std::size_t k) const {
+  const FaceCrop& crop = layout_.crops[k];
+  return located ? renderFaceCrop(model, crop, cropLocations_[k], options_.samples)
+                 : renderFaceCrop(model, crop, layout_.imageSize[faceIndex(crop.face)], options_.samples);
 }
 
 double TextureObjective::combine(const std::array<FaceTextureScore, 6>& faces) const {
@@ -117,15 +151,15 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
   std::vector<std::unique_ptr<WoodModel>> models;
   for (const WoodParameters& params : candidates)
     models.push_back(std::make_unique<WoodModel>(block_, params, rates_));
+  std::vector<char> located;
+  for (const auto& model : models) located.push_back(sameLocations(*model) ? 1 : 0);
   const std::size_t crops = layout_.crops.size();
   std::vector<Image> rendered(candidates.size() * crops);
   // One work item per (candidate, crop): enough of them to keep every thread busy.
   parallelRows(
       static_cast<int>(rendered.size()),
       [&](int item) {
-        const FaceCrop& crop = layout_.crops[item % crops];
-        rendered[item] = renderFaceCrop(*models[item / crops], crop, layout_.imageSize[faceIndex(crop.face)],
-                                        options_.samples);
+        rendered[item] = renderCrop(*models[item / crops], located[item / crops] != 0, item % crops);
       },
       progress.part(0.0, 0.8));
   std::vector<TextureScore> scores(candidates.size());
@@ -166,14 +200,10 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
 std::array<glm::vec3, 6> TextureObjective::meanColourRatios(const WoodParameters& params,
                                                             const Progress& progress) const {
   const WoodModel model(block_, params, rates_);
+  const bool located = sameLocations(model);
   std::vector<Image> rendered(layout_.crops.size());
   parallelRows(
-      static_cast<int>(rendered.size()),
-      [&](int k) {
-        const FaceCrop& crop = layout_.crops[k];
-        rendered[k] = renderFaceCrop(model, crop, layout_.imageSize[faceIndex(crop.face)], options_.samples);
-      },
-      progress);
+      static_cast<int>(rendered.size()), [&](int k) { rendered[k] = renderCrop(model, located, k); }, progress);
   std::array<glm::dvec3, 6> photoSum{}, renderSum{};
   for (std::size_t k = 0; k < rendered.size(); ++k) {
     const int face = faceIndex(layout_.crops[k].face);

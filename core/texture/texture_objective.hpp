@@ -68,7 +68,8 @@ struct TextureScore {
 
 class TextureObjective {
  public:
-  // params: the starting parameters; only their pith axis is used (face orientations). Throws InputError
+  // params: the starting parameters: their pith axis (face orientations) and where their field puts each
+  // crop point (reused for every candidate that puts them in the same places). Throws InputError
   // (no photos, photos whose proportions differ from their faces).
   TextureObjective(const Block& block, const GrowthRates& rates, const WoodParameters& params,
                    const std::array<Image, 6>& photos, const TextureLossOptions& options = {});
@@ -102,6 +103,13 @@ class TextureObjective {
   std::array<std::vector<TextureStatistics>, 6> photoStatistics_{};  // per face: pooled, per ring phase
   std::vector<std::vector<std::uint8_t>> cropLabels_;                // ring phase of each crop pixel
   std::array<std::vector<std::size_t>, 6> cropsOfFace_{};            // indices into layout_.crops
+  // Where every point of every crop lies in the tree under the start parameters (layout_.crops order),
+  // shaded again for each candidate whose probe points lie in the same places (sameLocations).
+  std::vector<std::vector<WoodLocation>> cropLocations_;
+  std::vector<glm::vec3> probes_;
+  std::vector<WoodLocation> probeLocations_;
+  bool sameLocations(const WoodModel& model) const;
+  Image renderCrop(const WoodModel& model, bool located, std::size_t k) const;
 };
 
 }  // namespace kerf
