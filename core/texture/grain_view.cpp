@@ -34,6 +34,25 @@ cv::Mat blurred(const cv::Mat& m, double sigma) {
   return out;
 }
 
+// Correlation of `detail` with itself shifted by (dx, dy) px, over the pixels where both lie inside the
+// image and `margin` px from its border.
+double shiftedCorrelation(const cv::Mat& detail, double dx, double dy, int margin) {
+  const cv::Mat shift = (cv::Mat_<double>(2, 3) << 1, 0, -dx, 0, 1, -dy);
+  cv::Mat moved;
+  cv::warpAffine(detail, moved, shift, detail.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT101);
+  const int mx = margin + static_cast<int>(std::ceil(std::abs(dx))),
+            my = margin + static_cast<int>(std::ceil(std::abs(dy)));
+  if (detail.cols - 2 * mx < 4 || detail.rows - 2 * my < 4) return 0.0;
+  const cv::Rect inside(mx, my, detail.cols - 2 * mx, detail.rows - 2 * my);
+  cv::Scalar meanA, spreadA, meanB, spreadB;
+  const cv::Mat a = detail(inside), b = moved(inside);
+  cv::meanStdDev(a, meanA, spreadA);
+  cv::meanStdDev(b, meanB, spreadB);
+  if (spreadA[0] < 1e-9 || spreadB[0] < 1e-9) return 0.0;
+  const double covariance = cv::mean((a - meanA[0]).mul(b - meanB[0]))[0];
+  return covariance / (spreadA[0] * spreadB[0]);
+}
+
 }  // namespace
 
 GrainView grainViewOf(const Image& image, double pxPerMm) {
@@ -57,6 +76,15 @@ GrainView grainViewOf(const Image& image, double pxPerMm) {
   const cv::Mat j11 = blurred(gx.mul(gx), window), j22 = blurred(gy.mul(gy), window),
                 j12 = blurred(gx.mul(gy), window);
   const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
+  // The lines run across the mean dominant gradient; the fine detail's self-correlation along them.
+  const double lines = 0.5 * std::atan2(2.0 * cv::mean(j12)[0], cv::mean(j11)[0] - cv::mean(j22)[0]) +
+                       0.5 * 3.14159265358979323846;
+  const cv::Mat detail = smooth - blurred(lum, 8.0 * k);
+  const double lagsMm[3] = {1.0, 2.0, 4.0};
+  for (int i = 0; i < 3; ++i) {
+    const double lag = lagsMm[i] * pxPerMm;
+    view.streak[i] = shiftedCorrelation(detail, lag * std::cos(lines), lag * std::sin(lines), view.margin);
+  }
   view.direction.resize(n), view.coherence.resize(n);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -103,6 +131,12 @@ double figureCorrelation(const GrainView& render, const GrainView& photo) {
 
 double contrastRatio(const GrainView& render, const GrainView& photo) {
   return render.bandSpread / (photo.bandSpread + 1e-9);
+}
+
+double streakDifference(const GrainView& render, const GrainView& photo) {
+  double sum = 0;
+  for (std::size_t i = 0; i < render.streak.size(); ++i) sum += std::abs(render.streak[i] - photo.streak[i]);
+  return sum / render.streak.size();
 }
 
 }  // namespace kerf

@@ -13,6 +13,12 @@
 //   drowns the figure (strong fibre streaks, pores spread over the ring) loses this correlation while
 //   direction and contrast can still look right. On CN03 from the nara preset, the search without it
 //   washed the flat-sawn figure out (docs/texture.md).
+// - Streak length: how alike the fine detail (1-8 px: pores, fibres) stays along the grain, as its
+//   correlation with itself shifted 1, 2 and 4 mm along the crop's dominant line direction. Long pore
+//   streaks (kuri, oak on side grain) stay alike for millimetres, short dashes and speckle do not. Nothing
+//   else in the loss sees lengths above ~1 mm: on a synthetic kuri block the search left the pores 3 mm
+//   long where they were 10 (docs/texture.md, species round trips).
+#include <array>
 #include <vector>
 
 #include "io/image.hpp"
@@ -28,6 +34,7 @@ struct GrainView {
   std::vector<float> coherence;  // per pixel, 0..1
   double bandSpread = 0;         // standard deviation of the band-passed luminance
   std::vector<float> figure;     // per pixel, the luminance band-passed at the ring figure's scale
+  std::array<double, 3> streak{};  // the fine detail's correlation with itself 1, 2 and 4 mm along the lines
 };
 
 GrainView grainViewOf(const Image& image, double pxPerMm = kYardstickPxPerMm);
@@ -46,5 +53,8 @@ double figureCorrelation(const GrainView& render, const GrainView& photo);
 
 // bandSpread of the render over the photo's: 1 the same contrast, ~0.1 a flat render.
 double contrastRatio(const GrainView& render, const GrainView& photo);
+
+// Mean |difference| of the streak correlations: 0 streaks as long as the photo's, up to 2.
+double streakDifference(const GrainView& render, const GrainView& photo);
 
 }  // namespace kerf

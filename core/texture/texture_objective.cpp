@@ -137,10 +137,12 @@ double TextureObjective::combine(const std::array<FaceTextureScore, 6>& faces) c
                         options_.grainWeight * (1.0 - faces[i].grain) +
                         options_.contrastWeight * std::abs(std::log(std::max(faces[i].contrast, 1e-3))) +
                         options_.figureWeight * (1.0 - faces[i].figure);
+    // Streak length only on side grain, where the lines are the fibres and the pores cut along them; on
+    // end grain they are the rings, whose continuity the figure term already judges.
     if (orientations_[i].grain == FaceGrain::EndGrain)
       end += face, ++endCount;
     else
-      side += face, ++sideCount;
+      side += face + options_.streakWeight * faces[i].streak, ++sideCount;
   }
   const int groups = (endCount > 0) + (sideCount > 0);
   return ((endCount ? end / endCount : 0.0) + (sideCount ? side / sideCount : 0.0)) / std::max(1, groups);
@@ -171,7 +173,7 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
         if (cropsOfFace_[face].empty()) return;
         std::vector<Image> faceCrops;
         std::vector<std::vector<std::uint8_t>> labels;
-        double l1 = 0, grain = 0, contrast = 0, figure = 0;
+        double l1 = 0, grain = 0, contrast = 0, figure = 0, streak = 0;
         for (std::size_t k : cropsOfFace_[face]) {
           faceCrops.push_back(rendered[c * crops + k]);
           if (!cropLabels_.empty()) labels.push_back(cropLabels_[k]);
@@ -180,6 +182,7 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
           grain += grainAgreement(view, photoGrain_[k]);
           contrast += contrastRatio(view, photoGrain_[k]);
           figure += figureCorrelation(view, photoGrain_[k]);
+          streak += streakDifference(view, photoGrain_[k]);
         }
         FaceTextureScore& score = scores[c].faces[face];
         const double count = static_cast<double>(cropsOfFace_[face].size());
@@ -188,6 +191,7 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
         score.grain = grain / count;
         score.contrast = contrast / count;
         score.figure = figure / count;
+        score.streak = streak / count;
         score.style = faceStyle(computeLabelledTextureStatistics(faceCrops, labels, options_.ringPhaseBins,
                                                                  layout_.pxPerMm[face], options_.statistics),
                                 photoStatistics_[face]);
@@ -244,7 +248,8 @@ TextureScore TextureObjective::evaluateFullFaces(const WoodParameters& params,
                       blurredMeanAbsoluteDifference(image, photo, layout_.pxPerMm[i]),
                       grainAgreement(view, photoView),
                       contrastRatio(view, photoView),
-                      figureCorrelation(view, photoView)};
+                      figureCorrelation(view, photoView),
+                      streakDifference(view, photoView)};
   }
   score.loss = combine(score.faces);
   return score;

@@ -41,6 +41,7 @@ struct TextureLossOptions {
   double grainWeight = 0.5;
   double contrastWeight = 0.5;
   double figureWeight = 1.0;  // of (1 - figure correlation): the ring figure stays where the field put it
+  double streakWeight = 1.0;  // of the streak-length difference (grain_view.hpp): pores as long as the photo's
   // Statistics also per part of the ring (ring phase in this many equal parts, from the fitted field), so
   // the loss sees where in the ring pores and latewood sit; 0: pooled over the face only. Off by default:
   // on CN03 three phases did not make the result look closer and made the loss noisier (docs/texture.md).
@@ -59,6 +60,7 @@ struct FaceTextureScore {
   double grain = 0;     // grain direction agreement with the photo (texture/grain_view.hpp), at most 1
   double contrast = 0;  // band-passed contrast over the photo's (1 the same)
   double figure = 0;    // correlation of the ring figure's light and dark bands with the photo's
+  double streak = 0;    // streak-length difference from the photo's (0 the same)
 };
 
 struct TextureScore {
