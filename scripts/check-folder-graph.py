@@ -32,7 +32,8 @@ ALLOWED = {
     "rings": {"util", "geometry", "render"},
     "io": {"util", "geometry", "params", "field", "render", "rings"},
     "fit": {"util", "geometry", "params", "field", "model", "render", "rings", "io"},
-    "texture": {"util", "geometry", "params", "field", "render", "io", "fit"},
+    # texture/ locates crop points in the tree once and shades them per candidate (WoodMaterial::locate/shade)
+    "texture": {"util", "geometry", "params", "field", "material", "render", "io", "fit"},
     "appearance": {"util", "geometry", "params", "field", "render", "io"},  # photo-true, beside texture
     "mesh": {"util", "geometry", "render", "io"},
     "export": {"util", "geometry", "render", "io", "mesh"},
