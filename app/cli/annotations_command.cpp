@@ -5,9 +5,9 @@
 #include <string>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
+#include "number_option.hpp"
 #include "rings/annotations.hpp"
 #include "util/error.hpp"
 

@@ -8,7 +8,8 @@ std::unique_ptr<CliApp> makeCliApp() {
   auto cli = std::make_unique<CliApp>();
   CLI::App& app = cli->app;
   app.require_subcommand(1);
-  app.add_flag("--stats", cli->context.stats, "Print wall time, threads, throughput and peak memory on stderr");
+  app.add_flag("--stats", cli->context.stats,
+               "Print wall time, threads, throughput and peak memory on stderr");
   addNumber(&app, "--threads", cli->threads, "Worker threads (0 = all cores)", 0, 256);
   app.add_flag("-q,--quiet", cli->context.quiet, "No progress output");
   cli->commands = {

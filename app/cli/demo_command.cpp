@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "demo/demo_block.hpp"
+#include "number_option.hpp"
 
 namespace kerf::cli {
 

@@ -52,8 +52,8 @@ Command addDetectCommand(CLI::App& app) {
         for (FaceId face : faces) {
           const fs::path& photo = project.facePhotos[faceIndex(face)];
           const glm::ivec2 size = readImageSize(photo);
-          checkRingDetectionSize(size.x, size.y, "face " + std::string(1, faceLetter(face)) + " photo " +
-                                                     photo.string());
+          checkRingDetectionSize(size.x, size.y,
+                                 "face " + std::string(1, faceLetter(face)) + " photo " + photo.string());
         }
         std::array<Image, 6> photos;
         for (FaceId face : faces) photos[faceIndex(face)] = readImage(project.facePhotos[faceIndex(face)]);

@@ -3,9 +3,9 @@
 #include <cstdio>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "export/export_job.hpp"
 #include "io/project.hpp"
+#include "number_option.hpp"
 #include "util/error.hpp"
 #include "util/number_list.hpp"
 
@@ -33,9 +33,10 @@ Command addExportCommand(CLI::App& app) {
   command->add_option("--face", o->face, "Image of face A..F");
   command->add_option("--plane", o->plane,
                       "Image of the cut px,py,pz,nx,ny,nz (a point and a normal, block mm)");
-  cli::addNumber(command, "--px-per-mm", o->pxPerMm, "Image resolution; stored in the file as DPI and mm per pixel",
-                 0.01f, 400.0f);
-  cli::addNumber(command, "--samples", o->samples, "Supersamples per pixel side (parts: per texel side)", 1, 8);
+  cli::addNumber(command, "--px-per-mm", o->pxPerMm,
+                 "Image resolution; stored in the file as DPI and mm per pixel", 0.01f, 400.0f);
+  cli::addNumber(command, "--samples", o->samples, "Supersamples per pixel side (parts: per texel side)", 1,
+                 8);
   command->add_option("--layer", o->layer, "What a PNG holds: colour, growth (16-bit) or rings")
       ->check(CLI::IsMember({"colour", "color", "growth", "rings"}));
   command->add_flag("--no-layers", o->noLayers, "TIFF/EXR: colour only, without the growth and rings layers");
@@ -59,7 +60,8 @@ Command addExportCommand(CLI::App& app) {
   command->add_flag(
       "--centre,--center", o->centre,
       "Part: centre the turned part's bounding box at --place (default 0,0,0: the block centre)");
-  cli::addNumber(command, "--texture-res", o->textureRes, "Part: side of the square baked texture in px", 16, 16384);
+  cli::addNumber(command, "--texture-res", o->textureRes, "Part: side of the square baked texture in px", 16,
+                 16384);
   command->add_flag("--require-fit", o->requireFit,
                     "Part: fail when the part sticks out of the block (default: export and warn)");
   return {command, [o](Context& context) {

@@ -18,7 +18,8 @@ const char* scaleName(ParamScale scale) {
 Command addParamsCommand(CLI::App& app) {
   auto* params = app.add_subcommand("params", "Print the parameter schema as JSON");
   auto presets = std::make_shared<bool>(false);
-  params->add_flag("--presets", *presets, "Print the built-in species presets instead (id, name, Mokume code)");
+  params->add_flag("--presets", *presets,
+                   "Print the built-in species presets instead (id, name, Mokume code)");
   return {params, [presets](Context&) {
             if (*presets) {
               nlohmann::ordered_json out = nlohmann::ordered_json::array();

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/face_photo_rectify.hpp"
 #include "io/image.hpp"
+#include "number_option.hpp"
 #include "util/error.hpp"
 #include "util/number_list.hpp"
 #include "util/size_limits.hpp"
@@ -54,8 +54,8 @@ Command addRectifyCommand(CLI::App& app) {
                  "Face image resolution (default: what the photo gives along the face's sides, at "
                  "most 20)",
                  0.0f, 200.0f);
-  cli::addNumber(rectify, "--rotate", o->rotate, "Quarter turn clockwise after rectifying: 0, 90, 180 or 270", 0,
-                 270)
+  cli::addNumber(rectify, "--rotate", o->rotate, "Quarter turn clockwise after rectifying: 0, 90, 180 or 270",
+                 0, 270)
       ->check(CLI::IsMember({0, 90, 180, 270}));
   rectify->add_flag("--flip", o->flip, "Mirror left <-> right after the turn");
   rectify->add_option("--white-balance", o->whiteBalance,

@@ -5,11 +5,11 @@
 #include <string>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "field/knot_field.hpp"
 #include "io/atomic_file.hpp"
 #include "io/log_data_import.hpp"
 #include "log_arguments.hpp"
+#include "number_option.hpp"
 #include "params/parameter_schema.hpp"
 #include "render/board_renderer.hpp"
 #include "util/error.hpp"
@@ -42,8 +42,9 @@ Command addRenderBoardCommand(CLI::App& app) {
   cmd->add_option("--face", o->face, "Which face of the board: A..F (A, the default, looks at the pith)")
       ->check(CLI::IsMember({"A", "B", "C", "D", "E", "F", "a", "b", "c", "d", "e", "f"}));
   cli::addNumber(cmd, "--along-knot", o->alongKnot,
-                  "Instead of --board: face A along knot K's axis (radial plane)", 0);
-  cli::addNumber(cmd, "--across-knot", o->acrossKnot, "Instead of --board: face A across knot K, facing the pith", 0);
+                 "Instead of --board: face A along knot K's axis (radial plane)", 0);
+  cli::addNumber(cmd, "--across-knot", o->acrossKnot,
+                 "Instead of --board: face A across knot K, facing the pith", 0);
   cli::addNumber(
       cmd, "--distance", o->distance,
       "With --across-knot: distance of face A from the pith, mm (default: 25 mm past the knot's death, "

@@ -4,10 +4,10 @@
 #include <string>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "field/knot_field.hpp"
 #include "io/atomic_file.hpp"
 #include "log_arguments.hpp"
+#include "number_option.hpp"
 #include "render/panel_render.hpp"
 #include "util/error.hpp"
 #include "util/number_list.hpp"
@@ -39,13 +39,15 @@ Command addRenderPanelCommand(CLI::App& app) {
                   "plywood)");
   cli::addNumber(cmd, "--layers", o->layers, "clt: layers (default 3); plywood: plies (default 5)", 1, 64);
   cli::addPositive(cmd, "--lamella-width", o->lamellaWidth, "clt: width of the lamellas (boards), mm");
-  cli::addNumber(cmd, "--seed", o->seed, "clt: where in the log the lamellas are cut (each seed another panel)");
+  cli::addNumber(cmd, "--seed", o->seed,
+                 "clt: where in the log the lamellas are cut (each seed another panel)");
   cli::addPositive(cmd, "--thickness", o->thickness,
-                  "veneer: the sheet's thickness (the knife's pitch per turn), mm");
+                   "veneer: the sheet's thickness (the knife's pitch per turn), mm");
   cmd->add_option("--sheet", o->sheet, "veneer: length (along the peel),width (up the log) in mm");
-  cli::addNumber(cmd, "--start", o->start, "veneer: where on the peel the sheet starts, mm from the first cut", 0);
+  cli::addNumber(cmd, "--start", o->start,
+                 "veneer: where on the peel the sheet starts, mm from the first cut", 0);
   cli::addNumber(cmd, "--height", o->height,
-                  "veneer: log height of the sheet's lower edge, mm (default: the knottiest section)");
+                 "veneer: log height of the sheet's lower edge, mm (default: the knottiest section)");
   cmd->add_option("--set", o->settings, "Override a parameter: id=value (e.g. knots.butterfly=0.8)");
   return {cmd, [o](Context& context) {
             const LogModel log = loadLogArgument(o->log);

@@ -8,9 +8,9 @@
 #include <sstream>
 #include "appearance/photo_true_appearance.hpp"
 #include "command.hpp"
-#include "number_option.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
+#include "number_option.hpp"
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"
 #include "texture_step.hpp"
@@ -76,17 +76,19 @@ Image comparisonSheet(const std::array<Image, 6>& photos, const std::array<Image
 // held-out faces, load and fit their faces) and stores the choice.
 void storePhotoAppearance(Project& project, const std::string& photosFolder, const std::string& compare) {
   if (!photosFolder.empty())
-    throw InputError("--photos is not used with --appearance photo: the photo-true appearance is made from the "
-                     "project's own photos (its \"faces\")");
+    throw InputError(
+        "--photos is not used with --appearance photo: the photo-true appearance is made from the "
+        "project's own photos (its \"faces\")");
   if (!compare.empty()) throw InputError("--compare is not used with --appearance photo; use render-faces");
   const WoodModel model(project);
   const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces);
   std::string faces;
   for (FaceId face : appearance.exemplarFaces()) faces += faceLetter(face);
   project.appearance = Appearance::Photo;
-  std::printf("appearance: photo-true, made from the photos of faces %s at %.3g px/mm%s\n", faces.c_str(),
-              appearance.synthesisPxPerMm(),
-              project.heldOutFaces.empty() ? "" : (" (held out: " + project.heldOutFaces.letters() + ")").c_str());
+  std::printf(
+      "appearance: photo-true, made from the photos of faces %s at %.3g px/mm%s\n", faces.c_str(),
+      appearance.synthesisPxPerMm(),
+      project.heldOutFaces.empty() ? "" : (" (held out: " + project.heldOutFaces.letters() + ")").c_str());
 }
 
 }  // namespace
@@ -100,8 +102,9 @@ Command addTextureCommand(CLI::App& app) {
     std::string project, out, photos, compare, parameters, appearance = "procedural";
     const TextureInferenceOptions defaults;  // the core's defaults, stated once
     unsigned seed = defaults.loss.seed;
-    int crops = defaults.loss.cropsPerFace, cropSize = defaults.loss.cropSize, sweeps = defaults.search.maxSweeps,
-        samples = defaults.loss.samples, ringPhases = defaults.loss.ringPhaseBins;
+    int crops = defaults.loss.cropsPerFace, cropSize = defaults.loss.cropSize,
+        sweeps = defaults.search.maxSweeps, samples = defaults.loss.samples,
+        ringPhases = defaults.loss.ringPhaseBins;
     bool noCoarse = false, keepColours = false;
   };
   auto o = std::make_shared<Options>();
@@ -113,23 +116,29 @@ Command addTextureCommand(CLI::App& app) {
   texture->add_option(
       "--photos", o->photos,
       "Folder with the face photos A_col.png .. F_col.png (or A.png ..); default: the project's");
-  cli::addNumber(texture, "--seed", o->seed, "Where the compared crops lie (default " + std::to_string(o->seed) + ")");
-  cli::addNumber(texture, "--crops", o->crops, "Crops per face (default " + std::to_string(o->crops) + ")", 1, 16);
-  cli::addNumber(texture, "--crop-size", o->cropSize, "Crop side in photo pixels (default " + std::to_string(o->cropSize) + ")", 16, 1024);
-  cli::addNumber(texture, "--sweeps", o->sweeps, "Coordinate-search sweeps (default " + std::to_string(o->sweeps) + "; 0 = coarse search only)",
-                 0, 100);
-  cli::addNumber(texture, "--samples", o->samples, "Points per pixel side when rendering (default " + std::to_string(o->samples) + ")", 1, 4);
+  cli::addNumber(texture, "--seed", o->seed,
+                 "Where the compared crops lie (default " + std::to_string(o->seed) + ")");
+  cli::addNumber(texture, "--crops", o->crops, "Crops per face (default " + std::to_string(o->crops) + ")", 1,
+                 16);
+  cli::addNumber(texture, "--crop-size", o->cropSize,
+                 "Crop side in photo pixels (default " + std::to_string(o->cropSize) + ")", 16, 1024);
+  cli::addNumber(
+      texture, "--sweeps", o->sweeps,
+      "Coordinate-search sweeps (default " + std::to_string(o->sweeps) + "; 0 = coarse search only)", 0, 100);
+  cli::addNumber(texture, "--samples", o->samples,
+                 "Points per pixel side when rendering (default " + std::to_string(o->samples) + ")", 1, 4);
   texture->add_option("--params", o->parameters,
                       "Comma-separated detail parameters to search (default: all; e.g. "
                       "pores.radius_earlywood,rays.spacing)");
   cli::addNumber(texture, "--ring-phases", o->ringPhases,
-                   "Also compare the statistics per part of the ring, in N ring phases (default 0: off)", 0, 8);
+                 "Also compare the statistics per part of the ring, in N ring phases (default 0: off)", 0, 8);
   texture
-      ->add_option("--appearance", o->appearance,
-                   "procedural (default): infer the procedural model's detail from the photos (minutes). photo: "
-                   "make every surface of the project's own photos, re-grown along the fitted field (issue 17, "
-                   "docs/texture.md); stored in the project, used by render-faces and render-cut; the "
-                   "procedural parameters are kept as they are")
+      ->add_option(
+          "--appearance", o->appearance,
+          "procedural (default): infer the procedural model's detail from the photos (minutes). photo: "
+          "make every surface of the project's own photos, re-grown along the fitted field (issue 17, "
+          "docs/texture.md); stored in the project, used by render-faces and render-cut; the "
+          "procedural parameters are kept as they are")
       ->check(CLI::IsMember({"procedural", "photo"}));
   texture->add_flag("--no-coarse", o->noCoarse, "Skip the coarse size grid");
   texture->add_flag("--keep-colours", o->keepColours, "Do not refit the colours after the detail");

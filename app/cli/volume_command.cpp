@@ -2,8 +2,8 @@
 #include <cstdio>
 
 #include "command.hpp"
-#include "number_option.hpp"
 #include "io/project.hpp"
+#include "number_option.hpp"
 #include "render/volume_export.hpp"
 
 namespace kerf::cli {

@@ -22,7 +22,6 @@
 #include <iterator>
 
 #include "autosave.hpp"
-#include "params/builtin_presets.hpp"
 #include "cut_plane_controls.hpp"
 #include "cut_view.hpp"
 #include "document.hpp"
@@ -31,6 +30,7 @@
 #include "job_status_widget.hpp"
 #include "log_panel.hpp"
 #include "parameter_panel.hpp"
+#include "params/builtin_presets.hpp"
 #include "qt_image.hpp"
 #include "recent_files.hpp"
 #include "render/renderers.hpp"

@@ -12,8 +12,8 @@
 #include "document_jobs.hpp"
 #include "export_dialog.hpp"
 #include "fit_job.hpp"
-#include "texture_job.hpp"
 #include "texture/texture_inference.hpp"
+#include "texture_job.hpp"
 
 class QAction;
 class QActionGroup;

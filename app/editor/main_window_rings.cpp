@@ -219,14 +219,13 @@ bool MainWindow::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
   lastFit_ = fit;
   otherPithAction_->setEnabled(fit->alternative.has_value());
   showFitResiduals(*fit);
-  logMessage(
-      fit->ambiguous ? "warning" : "info",
-      tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
-          .arg(fit->lossRings, 0, 'f', 4)
-          .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
-                                                       "Other Pith Candidate shows the other side")
-                                                  : tr("; the pith side is ambiguous"))
-                              : QString()));
+  logMessage(fit->ambiguous ? "warning" : "info",
+             tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
+                 .arg(fit->lossRings, 0, 'f', 4)
+                 .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
+                                                              "Other Pith Candidate shows the other side")
+                                                         : tr("; the pith side is ambiguous"))
+                                     : QString()));
   emit growthFieldFitted();
   return true;
 }

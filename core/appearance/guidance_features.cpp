@@ -24,8 +24,8 @@ float smoothStep(float a, float b, float x) {
 
 }  // namespace
 
-SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid, const GuidanceWeights& weights,
-                                const Progress& progress) {
+SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
+                                const GuidanceWeights& weights, const Progress& progress) {
   const int w = grid.width, h = grid.height;
   const std::size_t n = static_cast<std::size_t>(w) * h;
   SurfaceGuidance out;
@@ -67,12 +67,12 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, w - 1);
       const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h - 1);
-      const float gx = x1 > x0 ? (year[std::size_t(y) * w + x1] - year[std::size_t(y) * w + x0]) /
-                                     ((x1 - x0) * mmRight)
-                               : 0.0f;
-      const float gy = y1 > y0 ? (year[std::size_t(y1) * w + x] - year[std::size_t(y0) * w + x]) /
-                                     ((y1 - y0) * mmDown)
-                               : 0.0f;
+      const float gx =
+          x1 > x0 ? (year[std::size_t(y) * w + x1] - year[std::size_t(y) * w + x0]) / ((x1 - x0) * mmRight)
+                  : 0.0f;
+      const float gy =
+          y1 > y0 ? (year[std::size_t(y1) * w + x] - year[std::size_t(y0) * w + x]) / ((y1 - y0) * mmDown)
+                  : 0.0f;
       const float gn = (yearAbove[i] - year[i]) / stepMm;
       const float gradient = std::sqrt(gx * gx + gy * gy + gn * gn) + 1e-6f;
       // The grain direction: on side grain the fibre projected onto the surface (pores, fibre streaks and

@@ -47,17 +47,17 @@ inline constexpr int kGuidanceChannels = 9;
 
 struct SurfaceGuidance {
   int width = 0, height = 0;
-  std::vector<float> features;      // kGuidanceChannels per pixel, row-major, already weighted
-  std::vector<float> grainAngle;    // radians, per pixel
-  std::vector<std::uint8_t> inside; // 1 where the point lies in the block
+  std::vector<float> features;       // kGuidanceChannels per pixel, row-major, already weighted
+  std::vector<float> grainAngle;     // radians, per pixel
+  std::vector<std::uint8_t> inside;  // 1 where the point lies in the block
   const float* at(int x, int y) const {
     return &features[(static_cast<std::size_t>(y) * width + x) * kGuidanceChannels];
   }
 };
 
 // The features at every pixel of `grid` (rows in parallel; cancellable).
-SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid, const GuidanceWeights& weights,
-                                const Progress& progress = {});
+SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
+                                const GuidanceWeights& weights, const Progress& progress = {});
 
 // Half the resolution (2 x 2 pixels averaged; the angle through its unit vector): the next pyramid level.
 SurfaceGuidance halveGuidance(const SurfaceGuidance& guidance);

@@ -75,7 +75,8 @@ Image halveImage(const Image& image) {
         float sum = 0;
         for (int dy = 0; dy < 2; ++dy)
           for (int dx = 0; dx < 2; ++dx)
-            sum += image.pixel(std::min(2 * x + dx, image.width - 1), std::min(2 * y + dy, image.height - 1))[c];
+            sum +=
+                image.pixel(std::min(2 * x + dx, image.width - 1), std::min(2 * y + dy, image.height - 1))[c];
         out.pixel(x, y)[c] = 0.25f * sum;
       }
   return out;
@@ -88,7 +89,8 @@ class Synthesis {
       : ex_(exemplars), t_(target), o_(options), level_(level), r_(options.patchRadius), coarsest_(coarsest) {
     const float sigma = 0.5f * r_ + 0.5f;
     for (int dy = -r_; dy <= r_; ++dy)
-      for (int dx = -r_; dx <= r_; ++dx) voteWeight_.push_back(std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)));
+      for (int dx = -r_; dx <= r_; ++dx)
+        voteWeight_.push_back(std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)));
   }
 
   std::vector<Match>& field() { return nnf_; }
@@ -132,7 +134,8 @@ class Synthesis {
         const int x = dir > 0 ? i : t_.w - 1 - i;
         Match& m = nnf_[static_cast<std::size_t>(y) * t_.w + x];
         rescore(x, y, m, colourWeight);
-        if (x - dir >= 0 && x - dir < t_.w) propagate(x, y, nnf_[static_cast<std::size_t>(y) * t_.w + x - dir], dir, 0, m, colourWeight);
+        if (x - dir >= 0 && x - dir < t_.w)
+          propagate(x, y, nnf_[static_cast<std::size_t>(y) * t_.w + x - dir], dir, 0, m, colourWeight);
         randomSearch(x, y, m, random, colourWeight);
       }
     });
@@ -141,7 +144,8 @@ class Synthesis {
       for (int i = 0; i < t_.h; ++i) {
         const int y = dir > 0 ? i : t_.h - 1 - i;
         Match& m = nnf_[static_cast<std::size_t>(y) * t_.w + x];
-        if (y - dir >= 0 && y - dir < t_.h) propagate(x, y, nnf_[static_cast<std::size_t>(y - dir) * t_.w + x], 0, dir, m, colourWeight);
+        if (y - dir >= 0 && y - dir < t_.h)
+          propagate(x, y, nnf_[static_cast<std::size_t>(y - dir) * t_.w + x], 0, dir, m, colourWeight);
         tryGlobal(x, y, m, random, colourWeight);
       }
     });
@@ -192,8 +196,8 @@ class Synthesis {
 
   // The patch distance at target pixel (px, py) for exemplar position (qx, qy) turned by (c, s). Stops
   // adding once it exceeds `bound` (the best so far).
-  float distance(int px, int py, const ExemplarLevel& e, float qx, float qy, float c, float s, float colourWeight,
-                 float bound) const {
+  float distance(int px, int py, const ExemplarLevel& e, float qx, float qy, float c, float s,
+                 float colourWeight, float bound) const {
     float sum = 0;
     const int first = colourWeight > 0 ? 0 : kColour;
     // Every other row and column of the patch: a third of the work for patches of 11 x 11, and still every
@@ -225,7 +229,8 @@ class Synthesis {
     const ExemplarLevel& e = ex_[ei];
     if (!(qx >= e.minX && qx <= e.maxX && qy >= e.minY && qy <= e.maxY)) return false;
     const int ix = static_cast<int>(qx + 0.5f), iy = static_cast<int>(qy + 0.5f);
-    const float phi = t_.angle[static_cast<std::size_t>(py) * t_.w + px] - e.angle[static_cast<std::size_t>(iy) * e.w + ix];
+    const float phi =
+        t_.angle[static_cast<std::size_t>(py) * t_.w + px] - e.angle[static_cast<std::size_t>(iy) * e.w + ix];
     const float c = std::cos(phi), s = std::sin(phi);
     const float d = distance(px, py, e, qx, qy, c, s, colourWeight, best.cost);
     if (d >= best.cost) return false;
@@ -241,7 +246,8 @@ class Synthesis {
   }
 
   void propagate(int x, int y, const Match& nb, int stepX, int stepY, Match& m, float colourWeight) const {
-    tryCandidate(x, y, nb.e, nb.x + nb.c * stepX + nb.s * stepY, nb.y - nb.s * stepX + nb.c * stepY, m, colourWeight);
+    tryCandidate(x, y, nb.e, nb.x + nb.c * stepX + nb.s * stepY, nb.y - nb.s * stepX + nb.c * stepY, m,
+                 colourWeight);
   }
 
   // Barnes et al. 2009 Sec. 3.2: candidates around the best at exponentially shrinking radii.
@@ -249,9 +255,11 @@ class Synthesis {
     const ExemplarLevel& e = ex_[m.e];
     // Below the coarsest level the field was placed by the level above: the search stays near it (a few
     // patch widths; the global candidates still let it jump), which saves half the distances.
-    const float start = coarsest_ ? 0.5f * std::max(e.w, e.h) : std::min(0.5f * std::max(e.w, e.h), 4.0f * r_);
+    const float start =
+        coarsest_ ? 0.5f * std::max(e.w, e.h) : std::min(0.5f * std::max(e.w, e.h), 4.0f * r_);
     for (float radius = start; radius >= 1.0f; radius *= 0.5f) {
-      const float qx = m.x + radius * (2 * random.uniform() - 1), qy = m.y + radius * (2 * random.uniform() - 1);
+      const float qx = m.x + radius * (2 * random.uniform() - 1),
+                  qy = m.y + radius * (2 * random.uniform() - 1);
       tryCandidate(x, y, m.e, qx, qy, m, colourWeight);
     }
     tryGlobal(x, y, m, random, colourWeight);
@@ -261,8 +269,8 @@ class Synthesis {
   void tryGlobal(int x, int y, Match& m, Random& random, float colourWeight) const {
     const int ei = static_cast<int>(random.next() % ex_.size());
     const ExemplarLevel& e = ex_[ei];
-    tryCandidate(x, y, ei, e.minX + random.uniform() * (e.maxX - e.minX), e.minY + random.uniform() * (e.maxY - e.minY),
-                 m, colourWeight);
+    tryCandidate(x, y, ei, e.minX + random.uniform() * (e.maxX - e.minX),
+                 e.minY + random.uniform() * (e.maxY - e.minY), m, colourWeight);
   }
 
   const std::vector<ExemplarLevel>& ex_;

@@ -36,9 +36,9 @@ struct Exemplar {
 
 struct GuidedSynthesisOptions {
   std::uint32_t seed = 1;
-  int levels = 2;         // pyramid levels (each halves the resolution)
-  int patchRadius = 5;    // patches of (2r+1)^2 pixels at every level
-  int passes = 3;         // PatchMatch + vote passes per level
+  int levels = 2;             // pyramid levels (each halves the resolution)
+  int patchRadius = 5;        // patches of (2r+1)^2 pixels at every level
+  int passes = 3;             // PatchMatch + vote passes per level
   float colourWeight = 3.0f;  // colour against guidance in the patch distance
   bool sharpFinal = true;     // the final colours from each pixel's own match rather than the vote
 };

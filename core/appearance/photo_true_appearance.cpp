@@ -21,9 +21,10 @@ void checkProportions(const Block& block, FaceId face, const Image& photo) {
   const FaceFrame frame = block.face(face);
   const float expected = frame.heightMm * photo.width / frame.widthMm;
   if (std::abs(photo.height - expected) > 0.02f * expected + 1.0f)
-    throw InputError("the photo of face " + std::string(1, faceLetter(face)) + " is " + std::to_string(photo.width) +
-                     " x " + std::to_string(photo.height) + " px, but the face is " + std::to_string(frame.widthMm) +
-                     " x " + std::to_string(frame.heightMm) + " mm: its proportions differ from the face's");
+    throw InputError("the photo of face " + std::string(1, faceLetter(face)) + " is " +
+                     std::to_string(photo.width) + " x " + std::to_string(photo.height) +
+                     " px, but the face is " + std::to_string(frame.widthMm) + " x " +
+                     std::to_string(frame.heightMm) + " mm: its proportions differ from the face's");
 }
 
 float bilinear(const Image& image, float x, float y, int c) {
@@ -47,7 +48,8 @@ void resampleInto(const Image& source, glm::vec2 ratio, Image& out) {
       float sum[3] = {0, 0, 0};
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
-          const float sx = (x + (i + 0.5f) / nx) * ratio.x - 0.5f, sy = (y + (j + 0.5f) / ny) * ratio.y - 0.5f;
+          const float sx = (x + (i + 0.5f) / nx) * ratio.x - 0.5f,
+                      sy = (y + (j + 0.5f) / ny) * ratio.y - 0.5f;
           for (int c = 0; c < 3; ++c) sum[c] += bilinear(source, sx, sy, c);
         }
       for (int c = 0; c < 3; ++c) out.pixel(x, y)[c] = sum[c] / (nx * ny);
@@ -64,14 +66,16 @@ void equaliseTints(std::vector<Exemplar>& exemplars) {
   for (const Exemplar& e : exemplars) {
     glm::dvec3 sum(0.0);
     for (int y = 0; y < e.colour.height; ++y)
-      for (int x = 0; x < e.colour.width; ++x) sum += glm::dvec3(e.colour.pixel(x, y)[0], e.colour.pixel(x, y)[1], e.colour.pixel(x, y)[2]);
+      for (int x = 0; x < e.colour.width; ++x)
+        sum += glm::dvec3(e.colour.pixel(x, y)[0], e.colour.pixel(x, y)[1], e.colour.pixel(x, y)[2]);
     means.push_back(sum / double(e.colour.width * e.colour.height));
     overall += means.back() / double(exemplars.size());
   }
   for (std::size_t i = 0; i < exemplars.size(); ++i) {
     const glm::dvec3 gain = overall / glm::max(means[i], glm::dvec3(1e-6));
     Image& c = exemplars[i].colour;
-    for (std::size_t k = 0; k < c.pixels.size(); ++k) c.pixels[k] = std::min(1.0f, float(c.pixels[k] * gain[int(k % 3)]));
+    for (std::size_t k = 0; k < c.pixels.size(); ++k)
+      c.pixels[k] = std::min(1.0f, float(c.pixels[k] * gain[int(k % 3)]));
   }
 }
 
@@ -110,8 +114,9 @@ PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, const std::arra
     densities.push_back(photo.width / block.face(face).widthMm);
   }
   if (faces_.empty())
-    throw InputError(heldOut.empty() ? "the photo-true appearance needs face photos, and there are none"
-                                     : "the photo-true appearance needs face photos, and every face with one is held out");
+    throw InputError(
+        heldOut.empty() ? "the photo-true appearance needs face photos, and there are none"
+                        : "the photo-true appearance needs face photos, and every face with one is held out");
   // One synthesis resolution: the photos' median; a photo at another resolution is resampled to it.
   std::vector<float> sorted = densities;
   std::sort(sorted.begin(), sorted.end());
@@ -151,11 +156,13 @@ Image PhotoTrueAppearance::renderFace(FaceId face, glm::ivec2 size, const Progre
 }
 
 std::array<Image, 6> PhotoTrueAppearance::renderFaces(float pxPerMm, const Progress& progress) const {
-  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm)) throw InputError("pixels per mm must be a positive number");
+  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
+    throw InputError("pixels per mm must be a positive number");
   std::array<Image, 6> images;
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
-    images[i] = renderFace(face, model_.block().faceImageSize(face, pxPerMm), progress.part(i / 6.0, (i + 1) / 6.0));
+    images[i] =
+        renderFace(face, model_.block().faceImageSize(face, pxPerMm), progress.part(i / 6.0, (i + 1) / 6.0));
   }
   return images;
 }
@@ -176,7 +183,8 @@ Image PhotoTrueAppearance::renderCut(const CutPlane& plane, float pxPerMm, const
       int inside = 0;
       for (int sy = 0; sy < 2; ++sy)
         for (int sx = 0; sx < 2; ++sx)
-          inside += block.contains(outGrid.point(x - 0.5f + (sx + 0.5f) / 2, y - 0.5f + (sy + 0.5f) / 2)) ? 1 : 0;
+          inside +=
+              block.contains(outGrid.point(x - 0.5f + (sx + 0.5f) / 2, y - 0.5f + (sy + 0.5f) / 2)) ? 1 : 0;
       float* p = out.pixel(x, y);
       p[3] = inside / 4.0f;
       if (inside == 0) p[0] = p[1] = p[2] = 0.0f;
@@ -192,15 +200,17 @@ std::array<Image, 6> loadAppearancePhotos(const Project& project) {
     const std::filesystem::path& file = project.facePhotos[faceIndex(face)];
     if (file.empty() || project.heldOutFaces.contains(face)) continue;
     if (!std::filesystem::exists(file))
-      throw InputError("the photo of face " + std::string(1, faceLetter(face)) + " is missing: " + file.string());
+      throw InputError("the photo of face " + std::string(1, faceLetter(face)) +
+                       " is missing: " + file.string());
     photos[faceIndex(face)] = readImage(file);
     ++count;
   }
   if (count == 0)
-    throw InputError(project.heldOutFaces.empty()
-                         ? "the project has no face photos: the photo-true appearance is made from them"
-                         : "the project has no face photos besides its held-out faces: the photo-true appearance "
-                           "is made from them");
+    throw InputError(
+        project.heldOutFaces.empty()
+            ? "the project has no face photos: the photo-true appearance is made from them"
+            : "the project has no face photos besides its held-out faces: the photo-true appearance "
+              "is made from them");
   return photos;
 }
 

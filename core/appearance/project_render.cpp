@@ -16,19 +16,19 @@ PhotoTrueOptions optionsFor(const WoodModel& model) {
 
 }  // namespace
 
-std::array<Image, 6> renderProjectFaces(const Project& project, const WoodModel& model, float pxPerMm, int samples,
-                                        const Progress& progress) {
+std::array<Image, 6> renderProjectFaces(const Project& project, const WoodModel& model, float pxPerMm,
+                                        int samples, const Progress& progress) {
   if (project.appearance != Appearance::Photo) return renderFaces(model, pxPerMm, samples, progress);
-  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces, optionsFor(model),
-                                       progress.part(0.0, 0.05));
+  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces,
+                                       optionsFor(model), progress.part(0.0, 0.05));
   return appearance.renderFaces(pxPerMm, progress.part(0.05, 1.0));
 }
 
 Image renderProjectCut(const Project& project, const WoodModel& model, const CutPlane& plane, float pxPerMm,
                        int samples, const Progress& progress) {
   if (project.appearance != Appearance::Photo) return renderCut(model, plane, pxPerMm, samples, progress);
-  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces, optionsFor(model),
-                                       progress.part(0.0, 0.1));
+  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces,
+                                       optionsFor(model), progress.part(0.0, 0.1));
   return appearance.renderCut(plane, pxPerMm, progress.part(0.1, 1.0));
 }
 

@@ -15,8 +15,8 @@ struct Project;
 
 // `samples` (points per pixel side) applies to the procedural model; the photo-true appearance averages
 // its own pixels over each output pixel.
-std::array<Image, 6> renderProjectFaces(const Project& project, const WoodModel& model, float pxPerMm, int samples,
-                                        const Progress& progress = {});
+std::array<Image, 6> renderProjectFaces(const Project& project, const WoodModel& model, float pxPerMm,
+                                        int samples, const Progress& progress = {});
 Image renderProjectCut(const Project& project, const WoodModel& model, const CutPlane& plane, float pxPerMm,
                        int samples, const Progress& progress = {});
 

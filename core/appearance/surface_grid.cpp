@@ -25,7 +25,8 @@ SurfaceGrid faceGrid(const Block& block, FaceId face, glm::ivec2 size) {
 }
 
 SurfaceGrid cutGrid(const Block& block, const CutPlane& plane, float pxPerMm) {
-  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm)) throw InputError("pixels per mm must be a positive number");
+  if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
+    throw InputError("pixels per mm must be a positive number");
   const auto bounds = plane.boundsInBlock(block);
   if (!bounds) throw InputError("the cut plane does not pass through the block");
   const glm::vec2 extent = bounds->max - bounds->min;

@@ -25,15 +25,15 @@ constexpr int kProfileSize = 10;
 // did) mixes earlywood and latewood and pulls the fit to one mean colour (issue 16).
 struct Sample {
   int face = 0;
-  double pigment = 0;       // Beer's-law concentration t without the ring profile and the season
-  double season = 0;        // the season s (0 earlywood, 1 latewood), weighed by rings.season_shading
+  double pigment = 0;  // Beer's-law concentration t without the ring profile and the season
+  double season = 0;   // the season s (0 earlywood, 1 latewood), weighed by rings.season_shading
   double year = 0, ray = 0;
   // The pore weights over the photo pixel's footprint (3 x 3 points): a photo pixel averages a pore
   // smaller than itself, a single model point does not, and that made the fit pale the pores (issue 16).
   // Their shadow's darkness is fitted (profile[9]).
   float pore[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-  double phase = 0;         // where in its year the point lies (0 at a ring boundary)
-  int profileKnot = 0;      // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
+  double phase = 0;     // where in its year the point lies (0 at a ring boundary)
+  int profileKnot = 0;  // the ring profile's knots k-1 .. k+2 (mod 8) and their weights here
   double profileWeight[4] = {0, 0, 0, 0};
   double target[3] = {0, 0, 0};  // the photo's colour at the point
 };

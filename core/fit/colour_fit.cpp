@@ -1,14 +1,14 @@
 #include "fit/colour_fit.hpp"
 
 #include <ceres/ceres.h>
-#include <glm/exponential.hpp>
-#include <glm/geometric.hpp>
-#include <glm/vector_relational.hpp>
-#include <glm/mat3x3.hpp>
-#include <glm/matrix.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -145,7 +145,8 @@ bool ringProfileStart(const std::vector<Sample>& samples, double* early, double*
   double colour[8][3] = {}, pigment[8] = {}, count[8] = {};
   for (const Sample& s : samples) {
     const int knot = (s.profileKnot + (s.profileWeight[2] > s.profileWeight[1] ? 1 : 0)) % 8;  // nearest
-    for (int c = 0; c < 3; ++c) colour[knot][c] += s.target[c] / std::max(faceMean[s.face][c], 1e-3) * overall[c];
+    for (int c = 0; c < 3; ++c)
+      colour[knot][c] += s.target[c] / std::max(faceMean[s.face][c], 1e-3) * overall[c];
     pigment[knot] += s.pigment;
     count[knot] += 1;
   }
@@ -245,7 +246,8 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   glm::dvec3 shadowHue = toD(params.poreShadowHue);
   if (glm::all(glm::lessThan(direction, glm::dvec3(0.0))))
     shadowHue = glm::max(-direction / std::max({-direction.x, -direction.y, -direction.z}), glm::dvec3(0.05));
-  const glm::dvec3 poreHue = glm::max(shadowHue, glm::dvec3(1e-3)) / ((shadowHue.x + shadowHue.y + shadowHue.z) / 3.0);
+  const glm::dvec3 poreHue =
+      glm::max(shadowHue, glm::dvec3(1e-3)) / ((shadowHue.x + shadowHue.y + shadowHue.z) / 3.0);
   const ColourConstants constants{rayColor, params.rayOpacity, poreHue};
   const auto l1PerFace = [&](std::array<double, 6>& out) {
     std::array<double, 6> count{};
@@ -268,7 +270,7 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   std::map<std::tuple<int, int, int>, Bin> bins;  // (face, sixteenth of the year, 5-year band)
   for (const Sample& s : samples) {
     Bin& bin = bins[{s.face, std::min(15, static_cast<int>(16 * s.phase)),
-                         static_cast<int>(std::floor(s.year / 5.0))}];
+                     static_cast<int>(std::floor(s.year / 5.0))}];
     bin.members.push_back(&s);
     for (int c = 0; c < 3; ++c) bin.target[c] += s.target[c];
     const double y = luminance(s.target);
@@ -278,12 +280,13 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
     if (bin.members.size() < 8) continue;  // a sliver of a year at a face's edge: too noisy to weigh
     const double n = static_cast<double>(bin.members.size());
     for (double& t : bin.target) t /= n;
-    bin.targetSpread = std::sqrt(std::max(0.0, bin.targetSpread / n - luminance(bin.target) * luminance(bin.target)));
+    bin.targetSpread =
+        std::sqrt(std::max(0.0, bin.targetSpread / n - luminance(bin.target) * luminance(bin.target)));
     bin.constants = constants, bin.spreadWeight = options.spreadWeight;
     bin.weight = std::sqrt(n / static_cast<double>(samples.size()));
     const int face = std::get<0>(key);
-    problem.AddResidualBlock(new BinCost(std::move(bin)), nullptr, early, late, sapEarly, sapLate, sap, tint[face],
-                             profile);
+    problem.AddResidualBlock(new BinCost(std::move(bin)), nullptr, early, late, sapEarly, sapLate, sap,
+                             tint[face], profile);
   }
   problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ProfilePrior, 16, kProfileSize>(
                                new ProfilePrior{options.profileSmoothness, options.profileSmallness}),
@@ -300,9 +303,9 @@ ColourFitResult fitColours(const Block& block, const WoodParameters& params, con
   problem.SetParameterLowerBound(profile, 9, 0.0);  // pores.darkness's schema range
   problem.SetParameterUpperBound(profile, 9, 20.0);
   for (const auto& [heart, sapColour] : {std::pair{early, sapEarly}, std::pair{late, sapLate}})
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<HeartSapPrior, 3, 3, 3>(
-                                 new HeartSapPrior{options.heartSapWeight}),
-                             nullptr, heart, sapColour);
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<HeartSapPrior, 3, 3, 3>(new HeartSapPrior{options.heartSapWeight}),
+        nullptr, heart, sapColour);
   const std::pair<double*, double*> pairs[2] = {{early, late}, {sapEarly, sapLate}};
   const glm::dvec3 directions[2] = {direction, direction};
   for (int i = 0; i < 2; ++i)

@@ -36,14 +36,14 @@ namespace kerf {
 struct ColourFitOptions {
   int samplesPerSide = 80;  // sample points per face side (photo and model at the same point)
   int maxIterations = 50;
-  double tintWeight = 0.02;   // only fixes the scale between wood colours and tints
-  bool fitSapwood = true;     // the heart-to-sapwood radius and blend (needs both on the faces)
+  double tintWeight = 0.02;    // only fixes the scale between wood colours and tints
+  bool fitSapwood = true;      // the heart-to-sapwood radius and blend (needs both on the faces)
   bool fitRingProfile = true;  // rings.profile_*: the shading within a year (Mokume 5.3.2 base colour)
   double profileSmoothness = 0.02, profileSmallness = 0.005;  // priors on the ring profile's knots
   // Weight of the luminance spread within a bin (the contrast of the detail) beside its mean colour.
   double spreadWeight = 1.0;
   double pigmentHueWeight = 0.3;  // keeps latewood's pigment the hue of the photos' light-to-dark axis
-  double heartSapWeight = 0.02;  // heartwood colours follow the sapwood's where the photos show one only
+  double heartSapWeight = 0.02;   // heartwood colours follow the sapwood's where the photos show one only
   // Keeps pores.darkness near the species' (the start) in log terms: fitted from the bins alone it ranged
   // from 0 to 0.86 on CN03 as one face or another was held out, and at 0 the pores vanish.
   double poreDarknessWeight = 0.03;

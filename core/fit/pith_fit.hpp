@@ -52,7 +52,7 @@ struct PithFitOptions {
   int maxFitPoints = 3000;       // contour points used by the continuous fit (evenly subsampled)
   double robustScaleMm = 0.3;    // soft-L1 scale
   int maxIterations = 100;
-  double ambiguityRatio = 1.15;  // flipped candidate within this factor of the best loss: ambiguous
+  double ambiguityRatio = 1.15;            // flipped candidate within this factor of the best loss: ambiguous
   std::optional<AnatomyEstimate> anatomy;  // fibre direction from the photos (none: contours only)
   double anatomyWeight = 1.0;              // strength of the anatomical prior (0: report only)
 };

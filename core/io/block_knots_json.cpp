@@ -2,7 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-
 #include "io/json_file.hpp"
 #include "util/error.hpp"
 #include "util/parse_number.hpp"
@@ -17,7 +16,8 @@ glm::vec3 readVec3(const json& value, const std::string& what) {
   if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
       !value[2].is_number())
     throw InputError(what + " must be [x, y, z] in mm, got " + describeJson(value));
-  return {checkedNumber<float>(value[0].get<double>(), what), checkedNumber<float>(value[1].get<double>(), what),
+  return {checkedNumber<float>(value[0].get<double>(), what),
+          checkedNumber<float>(value[1].get<double>(), what),
           checkedNumber<float>(value[2].get<double>(), what)};
 }
 

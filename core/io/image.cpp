@@ -106,9 +106,10 @@ Image readImage(const std::filesystem::path& path, bool keepChannels) {
     }
   }
   if (nonFinite > 0) {
-    throw InputError("image " + path.string() + " has " + std::to_string(nonFinite) +
-                     (nonFinite == 1 ? " pixel that is not a finite number" : " pixels that are not finite numbers") +
-                     " (NaN or infinity); save it again without them");
+    throw InputError(
+        "image " + path.string() + " has " + std::to_string(nonFinite) +
+        (nonFinite == 1 ? " pixel that is not a finite number" : " pixels that are not finite numbers") +
+        " (NaN or infinity); save it again without them");
   }
   return out;
 }

@@ -41,7 +41,8 @@ const char* fileTypeName(unsigned mode) {
   return "not a regular file";
 }
 
-std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes) {
+std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind,
+                              std::uintmax_t maxBytes) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0)
     throw InputError("cannot open " + kind + " " + path.string() + ": " +
@@ -51,7 +52,8 @@ std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::stri
   return static_cast<std::uintmax_t>(st.st_size);
 }
 
-std::string readInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes) {
+std::string readInputFile(const std::filesystem::path& path, const std::string& kind,
+                          std::uintmax_t maxBytes) {
   checkInputFile(path, kind, maxBytes);
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw InputError("cannot open " + kind + " " + path.string() + ": " + std::strerror(errno));
@@ -65,8 +67,7 @@ std::string readInputFile(const std::filesystem::path& path, const std::string& 
     while (done < bytes.size()) {
       const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
       if (n < 0 && errno == EINTR) continue;
-      if (n < 0)
-        throw InputError("cannot read " + kind + " " + path.string() + ": " + std::strerror(errno));
+      if (n < 0) throw InputError("cannot read " + kind + " " + path.string() + ": " + std::strerror(errno));
       if (n == 0) break;  // the file shrank while being read
       done += static_cast<std::size_t>(n);
     }

@@ -20,10 +20,12 @@ const char* fileTypeName(unsigned mode);
 
 // Throws InputError unless `path` is a regular file of at most `maxBytes`. `kind` names it ("photo").
 // Returns its size.
-std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes);
+std::uintmax_t checkInputFile(const std::filesystem::path& path, const std::string& kind,
+                              std::uintmax_t maxBytes);
 
 // The whole file as bytes, checked as above, opened without blocking (O_NONBLOCK) and checked again on
 // the open descriptor, so a FIFO swapped in after the first check cannot block either.
-std::string readInputFile(const std::filesystem::path& path, const std::string& kind, std::uintmax_t maxBytes);
+std::string readInputFile(const std::filesystem::path& path, const std::string& kind,
+                          std::uintmax_t maxBytes);
 
 }  // namespace kerf

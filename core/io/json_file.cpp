@@ -22,7 +22,8 @@ std::string jsonProblem(const json::exception& e) {
   if (token != std::string::npos) {
     const std::size_t start = token + marker.size();
     const std::size_t close = what.find('\'', start);
-    const std::string quoted = what.substr(start, close == std::string::npos ? std::string::npos : close - start);
+    const std::string quoted =
+        what.substr(start, close == std::string::npos ? std::string::npos : close - start);
     const std::string rest = close == std::string::npos ? "" : what.substr(close + 1);
     what = what.substr(0, token) + "last read: " + quoteForMessage(quoted) + rest;
   }

@@ -41,7 +41,8 @@ int count(const json& v, const std::string& what, int lo, int hi) {
   if (!v.is_number()) throw InputError(what + " must be a number");
   const double n = v.get<double>();
   if (!(n >= lo && n <= hi) || n != std::floor(n)) {
-    throw InputError(what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+    throw InputError(what + " must be a whole number from " + std::to_string(lo) + " to " +
+                     std::to_string(hi));
   }
   return static_cast<int>(n);
 }

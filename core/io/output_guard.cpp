@@ -25,7 +25,9 @@ std::filesystem::path checkedOutputTarget(const std::filesystem::path& target) {
   // A symbolic link (or a chain of them) is written through: replace the file it names, keep the link.
   if (std::filesystem::is_symlink(target, error)) {
     real = std::filesystem::weakly_canonical(target, error);
-    if (error) throw InputError("cannot write " + target.string() + ": cannot follow the link (" + error.message() + ")");
+    if (error)
+      throw InputError("cannot write " + target.string() + ": cannot follow the link (" + error.message() +
+                       ")");
   }
   struct stat st {};
   if (::stat(real.c_str(), &st) != 0) return real;  // a new file
@@ -33,9 +35,10 @@ std::filesystem::path checkedOutputTarget(const std::filesystem::path& target) {
     throw InputError("cannot write " + target.string() + ": it is " + fileTypeName(st.st_mode) +
                      "; Kerf writes only regular files and does not replace anything else");
   if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
-    throw InputError("cannot write " + target.string() +
-                     ": the file is read-only; Kerf does not replace read-only files (make it writable first, "
-                     "or choose another name)");
+    throw InputError(
+        "cannot write " + target.string() +
+        ": the file is read-only; Kerf does not replace read-only files (make it writable first, "
+        "or choose another name)");
   if (guardInputs) {
     const std::lock_guard lock(inputsMutex);
     if (inputs.count({st.st_dev, st.st_ino}))
@@ -47,7 +50,8 @@ std::filesystem::path checkedOutputTarget(const std::filesystem::path& target) {
 
 void keepPermissions(const std::filesystem::path& existing, const std::filesystem::path& temporary) {
   struct stat st {};
-  if (::stat(existing.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::chmod(temporary.c_str(), st.st_mode & 07777);
+  if (::stat(existing.c_str(), &st) == 0 && S_ISREG(st.st_mode))
+    ::chmod(temporary.c_str(), st.st_mode & 07777);
 }
 
 void rememberInputFile(const std::filesystem::path& path) {

@@ -47,7 +47,9 @@ class WoodMaterial {
   // eight knots (k-1 .. k+2, modulo 8) weigh how much there.
   float yearPhase(float year) const { return kernels_.yearPhase(year); }  // 0 at a ring boundary .. 1
   float ringProfile(float year) const { return kernels_.ringProfileAt(year); }
-  int ringProfileCell(float year, glm::vec4& weights) const { return kernels_.ringProfileCell(year, weights); }
+  int ringProfileCell(float year, glm::vec4& weights) const {
+    return kernels_.ringProfileCell(year, weights);
+  }
 
   const GrowthField& field() const { return field_; }
   // The hash seed derived from model.seed (the shaders take it as the uniform u_hashSeed).

@@ -13,9 +13,9 @@
 #include <system_error>
 
 #include "export/file_extension.hpp"
+#include "io/input_file.hpp"
 #include "mesh/mesh_normals.hpp"
 #include "mesh/mesh_topology.hpp"
-#include "io/input_file.hpp"
 #include "util/error.hpp"
 
 namespace kerf {

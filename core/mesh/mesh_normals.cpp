@@ -114,7 +114,8 @@ void smoothNormalsAndJoinVertices(Mesh& mesh, const std::vector<bool>& needsNorm
       const glm::vec3 p = mesh.positions[v], n = cornerNormal[3 * t + k];
       const glm::vec2 uv = mesh.uvs[v];
       const float key[8] = {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y};
-      const auto [at, added] = vertexIds.emplace(bitsOf(key), static_cast<std::uint32_t>(joined.positions.size()));
+      const auto [at, added] =
+          vertexIds.emplace(bitsOf(key), static_cast<std::uint32_t>(joined.positions.size()));
       if (added) {
         joined.positions.push_back(p);
         joined.normals.push_back(n);

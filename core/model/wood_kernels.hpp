@@ -25,7 +25,9 @@ struct WoodKernels : NoiseKernels {
   uint u_hashSeed;
   vec3 u_axisDirection, u_axisReference, u_axisBinormal;
 
-  Cylindrical cylindricalOf(vec3 p, bool withAzimuth) const { return field_.axis().toCylindrical(p, withAzimuth); }
+  Cylindrical cylindricalOf(vec3 p, bool withAzimuth) const {
+    return field_.axis().toCylindrical(p, withAzimuth);
+  }
   float growthAt(const Cylindrical& c) const { return field_.evaluate(c); }
   float mergeKnots(vec3 p, float stemTime, float stemRadius, float& darkness) const {
     darkness = 0.0f;

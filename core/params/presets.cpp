@@ -4,8 +4,8 @@
 #include <fstream>
 #include <set>
 
-#include "io/project.hpp"
 #include "io/json_file.hpp"
+#include "io/project.hpp"
 #include "util/error.hpp"
 #include "util/parse_number.hpp"
 

@@ -17,15 +17,15 @@ namespace {
 constexpr float kPi = std::numbers::pi_v<float>;
 constexpr int kTile = 16;
 constexpr int kMaxLamellasPerLayer = 10000;  // 100 m of 10 mm boards
-constexpr float kMinPanelSideMm = 0.01f;      // a panel, layer or ply thinner than this is no panel
+constexpr float kMinPanelSideMm = 0.01f;     // a panel, layer or ply thinner than this is no panel
 
 // Every side from kMinPanelSideMm to kMaxBlockSideMm: a 1e-30 mm panel made a pixel count overflow.
 void checkPanelSize(glm::vec3 size, const char* what) {
   for (int i = 0; i < 3; ++i)
     if (!(size[i] >= kMinPanelSideMm && size[i] <= kMaxBlockSideMm)) {
       char text[200];
-      std::snprintf(text, sizeof text, "%s: the panel size %g x %g x %g mm is outside %g .. %g mm a side", what,
-                    size.x, size.y, size.z, kMinPanelSideMm, kMaxBlockSideMm);
+      std::snprintf(text, sizeof text, "%s: the panel size %g x %g x %g mm is outside %g .. %g mm a side",
+                    what, size.x, size.y, size.z, kMinPanelSideMm, kMaxBlockSideMm);
       throw InputError(text);
     }
 }
@@ -160,8 +160,8 @@ CltPanel makeCltPanel(const LogModel& log, glm::vec3 size, int layers, float lam
     std::snprintf(text, sizeof text,
                   "CLT: %g mm lamellas in a %g x %g mm panel of %d layers would make %.3g lamellas a layer, "
                   "%g mm thick; Kerf makes up to %d lamellas a layer, at least %g mm thick",
-                  lamellaWidth, size.x, size.y, layers, lamellasPerLayer, size.z / layers, kMaxLamellasPerLayer,
-                  kMinPanelSideMm);
+                  lamellaWidth, size.x, size.y, layers, lamellasPerLayer, size.z / layers,
+                  kMaxLamellasPerLayer, kMinPanelSideMm);
     throw InputError(text);
   }
   CltPanel panel;

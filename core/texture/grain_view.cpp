@@ -18,7 +18,8 @@ cv::Mat balancedLuminance(const Image& image) {
   for (std::size_t i = 0; i < n; ++i)
     for (int c = 0; c < 3; ++c) mean[c] += image.pixels[i * image.channels + c];
   float scale[3];
-  for (int c = 0; c < 3; ++c) scale[c] = static_cast<float>(1.0 / (2.0 * mean[c] / std::max<std::size_t>(n, 1) + 1e-6));
+  for (int c = 0; c < 3; ++c)
+    scale[c] = static_cast<float>(1.0 / (2.0 * mean[c] / std::max<std::size_t>(n, 1) + 1e-6));
   cv::Mat lum(image.height, image.width, CV_32F);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {

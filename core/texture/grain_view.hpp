@@ -29,11 +29,11 @@ inline constexpr double kYardstickPxPerMm = 6.4;
 
 struct GrainView {
   int width = 0, height = 0;
-  int margin = 12;               // px left out at the border by the comparisons (the filters' reach)
-  std::vector<float> direction;  // per pixel, radians (the dominant gradient's direction)
-  std::vector<float> coherence;  // per pixel, 0..1
-  double bandSpread = 0;         // standard deviation of the band-passed luminance
-  std::vector<float> figure;     // per pixel, the luminance band-passed at the ring figure's scale
+  int margin = 12;                 // px left out at the border by the comparisons (the filters' reach)
+  std::vector<float> direction;    // per pixel, radians (the dominant gradient's direction)
+  std::vector<float> coherence;    // per pixel, 0..1
+  double bandSpread = 0;           // standard deviation of the band-passed luminance
+  std::vector<float> figure;       // per pixel, the luminance band-passed at the ring figure's scale
   std::array<double, 3> streak{};  // the fine detail's correlation with itself 1, 2 and 4 mm along the lines
 };
 
@@ -41,14 +41,14 @@ GrainView grainViewOf(const Image& image, double pxPerMm = kYardstickPxPerMm);
 
 // Agreement of the grain directions, weighted by how clearly each shows one: the correlation of the two
 // fields of direction vectors, sum(cp cr cos 2(dp - dr)) / sqrt(sum(cp^2) sum(cr^2)), over the pixels
-// the photo's margin inside the border. 1: the same lines in the same directions, as clearly as the photo shows
-// them; 0: none or unrelated; -1: across them. Unlike the yardstick's `orient` (divided by sum(cp^2) only)
-// it does not grow when the render is more clearly lined than the photo: as an objective, that one made
+// the photo's margin inside the border. 1: the same lines in the same directions, as clearly as the photo
+// shows them; 0: none or unrelated; -1: across them. Unlike the yardstick's `orient` (divided by sum(cp^2)
+// only) it does not grow when the render is more clearly lined than the photo: as an objective, that one made
 // the search drop the rays, whose lines cross the rings on end grain. Same size required.
 double grainAgreement(const GrainView& render, const GrainView& photo);
 
-// Correlation of the figure bands over the pixels the photo's margin inside the border: 1 the same light and dark
-// bands in the same places, 0 unrelated or flat. Same size required.
+// Correlation of the figure bands over the pixels the photo's margin inside the border: 1 the same light and
+// dark bands in the same places, 0 unrelated or flat. Same size required.
 double figureCorrelation(const GrainView& render, const GrainView& photo);
 
 // bandSpread of the render over the photo's: 1 the same contrast, ~0.1 a flat render.

@@ -199,15 +199,17 @@ TextureInferenceResult inferTexture(const Block& block, const WoodParameters& pa
 std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResult& r) {
   std::vector<std::string> lines;
   if (!r.heldOut.empty()) lines.push_back(heldOutReportLine(r.heldOut));
-  lines.push_back(format("texture, per face (%s), before -> after: grain direction agreement (1 = the photo's), "
-                         "contrast (1 = the photo's), ring figure correlation, streak length difference (0 = the photo's), "
-                         "style distance, mean |render - photo|",
-                         r.fullFaces ? "whole faces" : "crops"));
+  lines.push_back(format(
+      "texture, per face (%s), before -> after: grain direction agreement (1 = the photo's), "
+      "contrast (1 = the photo's), ring figure correlation, streak length difference (0 = the photo's), "
+      "style distance, mean |render - photo|",
+      r.fullFaces ? "whole faces" : "crops"));
   for (FaceId face : kAllFaces) {
     const FaceTextureReport& f = r.faces[faceIndex(face)];
     if (!f.hasPhoto) continue;
     std::string line = format(
-        "  %c  %-26s (%4.1f deg to the pith)  grain %.2f -> %.2f   contrast %.2f -> %.2f   figure %.2f -> %.2f"
+        "  %c  %-26s (%4.1f deg to the pith)  grain %.2f -> %.2f   contrast %.2f -> %.2f   figure %.2f -> "
+        "%.2f"
         "   streaks %.2f -> %.2f   style %.3f -> %.3f   L1 %.4f -> %.4f",
         faceLetter(face), faceGrainName(f.orientation.grain).c_str(), f.orientation.angleToPithDeg,
         f.before.grain, f.after.grain, f.before.contrast, f.after.contrast, f.before.figure, f.after.figure,

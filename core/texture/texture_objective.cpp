@@ -87,10 +87,10 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
   });
   for (const FaceCrop& crop : layout_.crops) {  // the corners and the centre of every crop
     const glm::ivec2 size = layout_.imageSize[faceIndex(crop.face)];
-    for (const glm::vec2 at : {glm::vec2(crop.x, crop.y), glm::vec2(crop.x + crop.width, crop.y),
-                               glm::vec2(crop.x, crop.y + crop.height),
-                               glm::vec2(crop.x + crop.width, crop.y + crop.height),
-                               glm::vec2(crop.x + 0.5f * crop.width, crop.y + 0.5f * crop.height)}) {
+    for (const glm::vec2 at :
+         {glm::vec2(crop.x, crop.y), glm::vec2(crop.x + crop.width, crop.y),
+          glm::vec2(crop.x, crop.y + crop.height), glm::vec2(crop.x + crop.width, crop.y + crop.height),
+          glm::vec2(crop.x + 0.5f * crop.width, crop.y + 0.5f * crop.height)}) {
       probes_.push_back(block.imageToBlock(crop.face, at, size));
       probeLocations_.push_back(model.material().locate(probes_.back()));
     }
@@ -207,7 +207,8 @@ std::array<glm::vec3, 6> TextureObjective::meanColourRatios(const WoodParameters
   const bool located = sameLocations(model);
   std::vector<Image> rendered(layout_.crops.size());
   parallelRows(
-      static_cast<int>(rendered.size()), [&](int k) { rendered[k] = renderCrop(model, located, k); }, progress);
+      static_cast<int>(rendered.size()), [&](int k) { rendered[k] = renderCrop(model, located, k); },
+      progress);
   std::array<glm::dvec3, 6> photoSum{}, renderSum{};
   for (std::size_t k = 0; k < rendered.size(); ++k) {
     const int face = faceIndex(layout_.crops[k].face);

@@ -41,7 +41,8 @@ struct TextureLossOptions {
   double grainWeight = 0.5;
   double contrastWeight = 0.5;
   double figureWeight = 1.0;  // of (1 - figure correlation): the ring figure stays where the field put it
-  double streakWeight = 1.0;  // of the streak-length difference (grain_view.hpp): pores as long as the photo's
+  double streakWeight =
+      1.0;  // of the streak-length difference (grain_view.hpp): pores as long as the photo's
   // Statistics also per part of the ring (ring phase in this many equal parts, from the fitted field), so
   // the loss sees where in the ring pores and latewood sit; 0: pooled over the face only. Off by default:
   // on CN03 three phases did not make the result look closer and made the loss noisier (docs/texture.md).

@@ -29,7 +29,8 @@ struct ParsedNumber {
 };
 ParsedNumber parseDecimal(std::string_view text);
 std::string_view trimSpaces(std::string_view text);
-[[noreturn]] void throwNumberError(const std::string& what, std::string_view text, const std::string& problem);
+[[noreturn]] void throwNumberError(const std::string& what, std::string_view text,
+                                   const std::string& problem);
 std::string rangeText(long double min, long double max, bool integer);
 std::optional<long long> parseSignedInteger(std::string_view text);
 std::optional<unsigned long long> parseUnsignedInteger(std::string_view text);

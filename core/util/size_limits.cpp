@@ -78,7 +78,8 @@ void checkMemoryNeed(std::uint64_t bytes, std::string_view what) {
                    " of memory; this machine lets Kerf use " + gib(usable) + ": lower the resolution");
 }
 
-void checkImageReadMemory(const std::string& file, int width, int height, int channels, std::uint64_t usable) {
+void checkImageReadMemory(const std::string& file, int width, int height, int channels,
+                          std::uint64_t usable) {
   const std::uint64_t pixels = std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0));
   const std::uint64_t need = pixels * std::uint64_t(std::max(channels, 1)) * sizeof(float);
   const std::uint64_t budget = usable / 10 * 8;

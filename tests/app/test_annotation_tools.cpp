@@ -14,10 +14,10 @@
 
 #include "annotation_layer.hpp"
 #include "demo/demo_block.hpp"
+#include "demo_window.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "gl/surface_format.hpp"
-#include "demo_window.hpp"
 #include "main_window.hpp"
 #include "window_grab.hpp"
 

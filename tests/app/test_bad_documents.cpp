@@ -87,9 +87,9 @@ void TestBadDocuments::badDocumentLeavesTheOpenOneUnchanged_data() {
       << project("deep.kerf", R"({"format": "kerf-project", "version": 1, "block": {"size_mm": )" +
                                   QByteArray(100000, '[') + "1" + QByteArray(100000, ']') + "}}")
       << "nested deeper than 64 levels";
-  QTest::newRow("duplicate key")
-      << project("twice.kerf", R"({"format": "kerf-project", "version": 1, "version": 1})")
-      << "the key \"version\" appears twice";
+  QTest::newRow("duplicate key") << project("twice.kerf",
+                                            R"({"format": "kerf-project", "version": 1, "version": 1})")
+                                 << "the key \"version\" appears twice";
   QVERIFY(QDir(dir_.path()).mkpath("empty-sample"));
   QTest::newRow("empty sample folder") << dir_.filePath("empty-sample") << "holds no face photos";
   QVERIFY(QDir(dir_.path()).mkpath("odd-sample"));

@@ -15,7 +15,8 @@ namespace kerf::bad {
 // Far more than any refused request may take: the program and the parsed input, not the work.
 inline constexpr long kMaxRefusedPeakKiB = 400 * 1024;
 
-inline void expectRefusedAtOnce(const CliResult& r, const std::string& problem, const std::filesystem::path& outDir) {
+inline void expectRefusedAtOnce(const CliResult& r, const std::string& problem,
+                                const std::filesystem::path& outDir) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("kerf-cli: error: "), std::string::npos) << r.output;
   EXPECT_TRUE(std::regex_search(r.output, std::regex(problem))) << r.output;

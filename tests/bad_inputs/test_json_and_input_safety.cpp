@@ -35,9 +35,7 @@ std::size_t lengthBesidePaths(const std::string& text, const fs::path& folder) {
 
 class SafeInputs : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = freshTestFolder("safe_inputs");
-  }
+  void SetUp() override { dir_ = freshTestFolder("safe_inputs"); }
   // kerf-cli exits with code 2, its message matches `problem`, and `out` was not written.
   void expectCliRefuses(const std::string& arguments, const std::string& problem, const fs::path& out) {
     const CliResult r = runCli(arguments);
@@ -61,8 +59,8 @@ bool printable(const std::string& text) {
 
 TEST_F(SafeInputs, ProjectBlockSizeNested100000Deep) {
   const fs::path project = dir_ / "deep.kerf";
-  writeText(project, R"({"format": "kerf-project", "version": 1, "block": {"size_mm": )" +
-                         nested(100000, "1") + "}}");
+  writeText(project,
+            R"({"format": "kerf-project", "version": 1, "block": {"size_mm": )" + nested(100000, "1") + "}}");
   const std::string error = errorOf([&] { loadDocument(project); });
   EXPECT_NE(error.find(project.string()), std::string::npos) << error;
   EXPECT_NE(error.find("nested deeper than 64 levels"), std::string::npos) << error;
@@ -91,7 +89,8 @@ TEST_F(SafeInputs, DuplicateKeysAreRefusedNamingTheKey) {
                          "growth.ring_width": 3}})");
   const std::string error = errorOf([&] { loadProject(project); });
   EXPECT_NE(error.find(project.string()), std::string::npos) << error;
-  EXPECT_NE(error.find("the key \"growth.ring_width\" appears twice in one object"), std::string::npos) << error;
+  EXPECT_NE(error.find("the key \"growth.ring_width\" appears twice in one object"), std::string::npos)
+      << error;
   // The same key in two different objects is fine.
   EXPECT_NO_THROW(parseJsonText(R"({"a": {"x": 1}, "b": {"x": 2}})", "test"));
 }
@@ -139,11 +138,12 @@ TEST_F(SafeInputs, FifoAsProjectOrPhotoIsRefusedWithoutBlocking) {
 
 TEST_F(SafeInputs, DevZeroAsProjectPhotoOrMeshIsRefused) {
   const fs::path zero = "/dev/zero";
-  EXPECT_NE(errorOf([&] { loadProject(zero); }).find("/dev/zero: it is a character device"), std::string::npos);
+  EXPECT_NE(errorOf([&] { loadProject(zero); }).find("/dev/zero: it is a character device"),
+            std::string::npos);
   EXPECT_NE(errorOf([&] { readImage(zero); }).find("a character device"), std::string::npos);
-  expectCliRefuses("rectify /dev/zero --corners 0,0,9,0,9,9,0,9 --size-mm 10,10 --out " +
-                       (dir_ / "face.png").string(),
-                   "/dev/zero: it is a character device", dir_ / "face.png");
+  expectCliRefuses(
+      "rectify /dev/zero --corners 0,0,9,0,9,9,0,9 --size-mm 10,10 --out " + (dir_ / "face.png").string(),
+      "/dev/zero: it is a character device", dir_ / "face.png");
   const fs::path mesh = dir_ / "zero.obj";
   fs::create_symlink(zero, mesh);  // the extension a mesh needs, the bytes of /dev/zero
   EXPECT_NE(errorOf([&] { loadMesh(mesh); }).find("a character device"), std::string::npos);

@@ -129,7 +129,8 @@ TEST(OutputFailures, TemporaryLeftByAKilledWriterIsRemovedByTheNextWrite) {
   const fs::path staging = dir / ".detect.tmp999999999-1";  // a killed detect's staging folder
   const fs::path notOurs = dir / ".block.tmpnotes.kerf", visible = dir / "block.tmp999999999-0.kerf",
                  trailing = dir / ".block.tmp999999999-0x";
-  for (const fs::path& p : {dead, live, other, noExtension, notOurs, visible, trailing}) writeText(p, "partial");
+  for (const fs::path& p : {dead, live, other, noExtension, notOurs, visible, trailing})
+    writeText(p, "partial");
   fs::create_directories(staging);
   writeText(staging / "A_arl.png", "partial");
   writeTextAtomically(dir / "block.kerf", "{}");

@@ -6,8 +6,8 @@
 #include <sys/sysmacros.h>
 
 #include <cstdio>
-#include <map>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <string>
 
@@ -22,9 +22,7 @@ namespace {
 
 class OutputGuard : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = freshTestFolder("output_guard");
-  }
+  void SetUp() override { dir_ = freshTestFolder("output_guard"); }
   // kerf-cli exits with code 2 naming the problem, and the folder holds what it held before, byte for
   // byte, and no temporary.
   void expectRefusedLeavingTheFolder(const std::string& arguments, const std::string& problem) {
@@ -50,26 +48,28 @@ void writeMesh(const fs::path& path) {
 TEST_F(OutputGuard, MeshAsItsOwnOutputIsRefused) {
   saveProject(Project(), dir_ / "block.kerf");
   writeMesh(dir_ / "m.obj");
-  expectRefusedLeavingTheFolder("export " + (dir_ / "block.kerf").string() + " --mesh " + (dir_ / "m.obj").string() +
-                                    " --out " + (dir_ / "m.obj").string(),
+  expectRefusedLeavingTheFolder("export " + (dir_ / "block.kerf").string() + " --mesh " +
+                                    (dir_ / "m.obj").string() + " --out " + (dir_ / "m.obj").string(),
                                 "--out .*m.obj is also the input --mesh");
 }
 
 TEST_F(OutputGuard, PhotoAsItsOwnOutputIsRefused) {
   writePhoto(dir_ / "p.png", 16, 16);
   expectRefusedLeavingTheFolder("rectify " + (dir_ / "p.png").string() +
-                                    " --corners 0,0,15,0,15,15,0,15 --size-mm 10,10 --out " + (dir_ / "p.png").string(),
+                                    " --corners 0,0,15,0,15,15,0,15 --size-mm 10,10 --out " +
+                                    (dir_ / "p.png").string(),
                                 "--out .*p.png is also the input PHOTO");
   // Through another name of the same file (a hard link).
   fs::create_hard_link(dir_ / "p.png", dir_ / "q.png");
   expectRefusedLeavingTheFolder("rectify " + (dir_ / "p.png").string() +
-                                    " --corners 0,0,15,0,15,15,0,15 --size-mm 10,10 --out " + (dir_ / "q.png").string(),
+                                    " --corners 0,0,15,0,15,15,0,15 --size-mm 10,10 --out " +
+                                    (dir_ / "q.png").string(),
                                 "is also the input PHOTO");
 }
 
 TEST_F(OutputGuard, TwoOutputsWithOneNameAreRefused) {
-  expectRefusedLeavingTheFolder("render-board random:1 --res 16 --out " + (dir_ / "x.png").string() + " --save-log " +
-                                    (dir_ / "x.png").string(),
+  expectRefusedLeavingTheFolder("render-board random:1 --res 16 --out " + (dir_ / "x.png").string() +
+                                    " --save-log " + (dir_ / "x.png").string(),
                                 "--out and --save-log name the same file");
 }
 
@@ -132,7 +132,8 @@ TEST_F(OutputGuard, ReadOnlyFileIsRefusedAndModeIsKept) {
   const std::string error = errorOf([&] { saveProject(other, file); });
   EXPECT_NE(error.find("block.kerf: the file is read-only"), std::string::npos) << error;
   EXPECT_EQ(readBytes(file), before);
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1) << "a temporary was left";
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1)
+      << "a temporary was left";
 }
 
 TEST_F(OutputGuard, DetectOnAFullDiskLeavesNoPartialRingImages) {
@@ -140,7 +141,8 @@ TEST_F(OutputGuard, DetectOnAFullDiskLeavesNoPartialRingImages) {
   // and contours.json does not. Before, the images written so far stayed in --out for a later fit.
   const fs::path sample = dir_ / "sample";
   fs::create_directories(sample);
-  for (const char* face : {"A", "B", "C", "D", "E", "F"}) writePhoto(sample / (std::string(face) + "_col.png"), 64, 64);
+  for (const char* face : {"A", "B", "C", "D", "E", "F"})
+    writePhoto(sample / (std::string(face) + "_col.png"), 64, 64);
   const fs::path out = dir_ / "rings";
   const std::string command = "trap \"\" XFSZ; ulimit -f 2; " + std::string(KERF_CLI) + " -q detect " +
                               sample.string() + " --out " + out.string();

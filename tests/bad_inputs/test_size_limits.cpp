@@ -19,7 +19,6 @@ using namespace kerf::bad;
 
 namespace {
 
-
 class SizeLimits : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -27,11 +27,21 @@ struct NumberCase {
   std::string expected;  // "=VALUE" when accepted, else a regex the message must match
 };
 
-double asFloat(const std::string& t) { return parseNumber<float>(t, "x"); }
-double asDouble(const std::string& t) { return parseNumber<double>(t, "x"); }
-double asInt(const std::string& t) { return parseNumber<int>(t, "x"); }
-double asCount32(const std::string& t) { return parseNumber<std::uint32_t>(t, "x"); }
-double asPercent(const std::string& t) { return parseNumber<double>(t, "x", 0.0, 100.0); }
+double asFloat(const std::string& t) {
+  return parseNumber<float>(t, "x");
+}
+double asDouble(const std::string& t) {
+  return parseNumber<double>(t, "x");
+}
+double asInt(const std::string& t) {
+  return parseNumber<int>(t, "x");
+}
+double asCount32(const std::string& t) {
+  return parseNumber<std::uint32_t>(t, "x");
+}
+double asPercent(const std::string& t) {
+  return parseNumber<double>(t, "x", 0.0, 100.0);
+}
 
 const NumberCase kNumbers[] = {
     {"0.5", asFloat, "=0.5"},
@@ -48,7 +58,7 @@ const NumberCase kNumbers[] = {
     {"0.5junk", asFloat, "x: \"0.5junk\" is not a number"},
     {"", asFloat, "is not a number"},
     {"0x10", asInt, "is not a number"},  // CLI11 alone read hexadecimal
-    {"010", asInt, "=10"},                // and octal: 010 was 8
+    {"010", asInt, "=10"},               // and octal: 010 was 8
     {"8", asInt, "=8"},
     {"1e3", asInt, "=1000"},
     {"8.9", asInt, "x: \"8.9\" is not a whole number"},
@@ -96,21 +106,25 @@ struct CliCase {
 const CliCase kCliCases[] = {
     {"fit {dir} --out {dir}/x.kerf --anatomy-weight nan", "--anatomy-weight: \"nan\" is not a finite number"},
     {"render-panel random:1 --type veneer --out {dir}/x.png --start nan", "--start: \"nan\" is not a finite"},
-    {"render-panel random:1 --type veneer --out {dir}/x.png --height nan", "--height: \"nan\" is not a finite"},
+    {"render-panel random:1 --type veneer --out {dir}/x.png --height nan",
+     "--height: \"nan\" is not a finite"},
     {"rectify {dir}/p.png --corners 0,0,1,0,1,1,0,1 --size-mm 1,1 --px-per-mm nan --out {dir}/x.png",
      "--px-per-mm: \"nan\" is not a finite"},
     {"render-board random:1 --out {dir}/x.png --across-knot 0 --distance nan", "--distance: \"nan\""},
     {"render-board random:1 --out {dir}/x.png --res 0x40", "--res: \"0x40\" is not a number"},
-    {"render-panel random:1 --type clt --out {dir}/x.png --seed 4294967304", "--seed: \"4294967304\" is outside"},
+    {"render-panel random:1 --type clt --out {dir}/x.png --seed 4294967304",
+     "--seed: \"4294967304\" is outside"},
     {"render-panel random:1 --type clt --out {dir}/x.png --seed -1", "--seed: \"-1\" is outside"},
     {"demo --out {dir}/demo --size 8.9", "--size: \"8.9\" is not a whole number"},
-    {"render-panel random:1 --type clt --out {dir}/x.png --lamella-width 1e308", "--lamella-width: \"1e308\""},
+    {"render-panel random:1 --type clt --out {dir}/x.png --lamella-width 1e308",
+     "--lamella-width: \"1e308\""},
     {"render-board random:1 --out {dir}/x.png --set knots.butterfly=0.5junk",
      "--set knots.butterfly: \"0.5junk\" is not a number"},
     {"render-board random:1 --out {dir}/x.png --set knots.butterfly=nan", "--set knots.butterfly: \"nan\""},
     {"render-board random:1 --out {dir}/x.png --set knots.butterfly=0.5,0.5", "needs 1 number\\(s\\), got 2"},
     {"render-board random:4294967304 --out {dir}/x.png", "LOG random:SEED: \"4294967304\" is outside"},
-    {"render-panel random:1 --type clt --out {dir}/x.png --size 600,nan,90", "--size: \"nan\" is not a finite"},
+    {"render-panel random:1 --type clt --out {dir}/x.png --size 600,nan,90",
+     "--size: \"nan\" is not a finite"},
     {"--threads 1.5 params", "--threads: \"1.5\" is not a whole number"},
 };
 
@@ -127,7 +141,8 @@ TEST_P(CliNumbers, RefusedWithExitCode2NamingTheOption) {
   writePhoto(dir / "p.png", 8, 8);
   saveProject(Project(), dir / "b.kerf");
   std::string arguments = GetParam().arguments;
-  for (std::size_t at; (at = arguments.find("{dir}")) != std::string::npos;) arguments.replace(at, 5, dir.string());
+  for (std::size_t at; (at = arguments.find("{dir}")) != std::string::npos;)
+    arguments.replace(at, 5, dir.string());
   SCOPED_TRACE(arguments);
   const CliResult r = runCli(arguments);
   EXPECT_EQ(r.exitCode, 2) << r.output;
@@ -178,7 +193,8 @@ const FileCase kFileCases[] = {
     {"ParameterTooLargeForAFloat",
      R"({"format": "kerf-project", "version": 1, "parameters": {"growth.ring_width": 1e308}})",
      "parameter growth.ring_width: \"1e\\+308\" is outside"},
-    {"BlockSideTooLargeForAFloat", R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [1e308, 1, 1]}})",
+    {"BlockSideTooLargeForAFloat",
+     R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [1e308, 1, 1]}})",
      "block.size_mm: \"1e\\+308\" is outside"},
     {"KnotIdThatWraps",
      R"({"format": "kerf-project", "version": 1, "knots": [{"id": 4294967297, "origin": [0,0,0],
@@ -187,7 +203,8 @@ const FileCase kFileCases[] = {
     {"BlockOf1e-30Mm", R"({"format": "kerf-project", "version": 1, "block": {"size_mm": [1e-30, 40, 40]}})",
      "block size must be three positive lengths of at least 0.01 mm and at most 100000 mm, got 1e-30 x 40 "
      "x 40"},
-    {"VersionThatWraps", R"({"format": "kerf-project", "version": 4294967297})", "version: \"4294967297\" is outside"},
+    {"VersionThatWraps", R"({"format": "kerf-project", "version": 4294967297})",
+     "version: \"4294967297\" is outside"},
 };
 
 TEST(ValidatedNumbers, FileNumbersThatDoNotFitAreRefused) {
@@ -225,12 +242,17 @@ TEST(ValidatedNumbers, TraceYearOutsideAMokumeImageIsRefusedOnExport) {
   trace.points = {{5.0f, 5.0f}, {20.0f, 20.0f}};
   trace.year = 300;
   annotations.traces.push_back(trace);
-  const std::string error =
-      errorOf([&] { ringImageFromTraces(annotations, FaceId::A, Block(glm::vec3(40.0f)), {64, 64}); });
-  EXPECT_NE(error.find("year 300 on face A does not fit a Mokume ring image (years 0 to 254)"), std::string::npos)
+  const std::string error = errorOf([&] {
+    ringImageFromTraces(annotations, FaceId::A, Block(glm::vec3(40.0f)), {64, 64});
+  });
+  EXPECT_NE(error.find("year 300 on face A does not fit a Mokume ring image (years 0 to 254)"),
+            std::string::npos)
       << error;
   annotations.traces[0].year = 254;
-  EXPECT_EQ(errorOf([&] { ringImageFromTraces(annotations, FaceId::A, Block(glm::vec3(40.0f)), {64, 64}); }), "");
+  EXPECT_EQ(errorOf([&] {
+              ringImageFromTraces(annotations, FaceId::A, Block(glm::vec3(40.0f)), {64, 64});
+            }),
+            "");
 }
 
 }  // namespace

@@ -20,8 +20,8 @@
 #include "io/block_knots_json.hpp"
 #include "io/log_data_import.hpp"
 #include "io/project.hpp"
-#include "rings/detect_block_rings.hpp"
 #include "refused_run.hpp"
+#include "rings/detect_block_rings.hpp"
 #include "util/size_limits.hpp"
 
 using namespace kerf;
@@ -63,9 +63,7 @@ void writePng(const fs::path& path, int width, int height, int channels,
 
 class WorkBudgets : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = freshTestFolder("work_budgets", "out");
-  }
+  void SetUp() override { dir_ = freshTestFolder("work_budgets", "out"); }
   void expectRefused(const std::string& arguments, const std::string& problem) {
     expectRefusedAtOnce(runCli(arguments), problem, dir_ / "out");
   }
@@ -77,7 +75,8 @@ class WorkBudgets : public ::testing::Test {
 TEST_F(WorkBudgets, SixHugeGreyFacesAreRefusedByDetectBeforeDecoding) {
   const fs::path sample = dir_ / "sample";
   fs::create_directories(sample);
-  writePng(sample / "A_col.png", 10950, 10950, 1, [](int x, int y, int) { return (x / 64 + y / 64) % 2 * 40 + 100; });
+  writePng(sample / "A_col.png", 10950, 10950, 1,
+           [](int x, int y, int) { return (x / 64 + y / 64) % 2 * 40 + 100; });
   EXPECT_GT(fs::file_size(sample / "A_col.png"), 1'000'000u);
   for (const char* face : {"B", "C", "D", "E", "F"})
     fs::create_hard_link(sample / "A_col.png", sample / (std::string(face) + "_col.png"));
@@ -155,16 +154,16 @@ TEST_F(WorkBudgets, RgbaPhotoIsReadWithOneFloatCopy) {
   EXPECT_EQ(values[2], 1) << "the RGBA photo did not read back as its RGB values";
   const double rgbCopyKiB = double(kSide) * kSide * 3 * sizeof(float) / 1024.0;
   const double grewKiB = double(values[1] - values[0]);
-  std::printf("reading the %d x %d RGBA PNG grew the peak by %.0f MiB (one RGB float copy: %.0f MiB)\n", kSide,
-              kSide, grewKiB / 1024, rgbCopyKiB / 1024);
+  std::printf("reading the %d x %d RGBA PNG grew the peak by %.0f MiB (one RGB float copy: %.0f MiB)\n",
+              kSide, kSide, grewKiB / 1024, rgbCopyKiB / 1024);
 #if defined(__SANITIZE_ADDRESS__)
   // ASan keeps freed blocks in quarantine (256 MB by default), so the decoder's freed row buffers stay
   // resident: the peak says nothing about the read here. The Release build checks it.
   GTEST_SKIP() << "the peak memory of a read is not measurable under AddressSanitizer (quarantine)";
 #endif
-  EXPECT_LT(grewKiB, 1.5 * rgbCopyKiB) << "reading took " << grewKiB / 1024 << " MiB beyond the "
-                                       << values[0] / 1024 << " MiB held before; one RGB copy is "
-                                       << rgbCopyKiB / 1024 << " MiB";
+  EXPECT_LT(grewKiB, 1.5 * rgbCopyKiB)
+      << "reading took " << grewKiB / 1024 << " MiB beyond the " << values[0] / 1024
+      << " MiB held before; one RGB copy is " << rgbCopyKiB / 1024 << " MiB";
 }
 
 // The example: a 10 MB log of 100k knots needed 3.4 GB (two noise tables per knot). Twice the
@@ -176,12 +175,14 @@ TEST_F(WorkBudgets, LogOfTwiceTheKnotBudgetIsRefusedNamingTheFile) {
   const fs::path file = dir_ / "many-knots.kerflog";
   saveLogFile(generateRandomLog(options), file);
   nlohmann::json log = nlohmann::json::parse(readBytes(file));
-  const nlohmann::json knot = {{"distance_step_mm", 4.0}, {"height_mm", {100.0, 104.0}}, {"azimuth_rad", {0.0, 0.5}}};
+  const nlohmann::json knot = {
+      {"distance_step_mm", 4.0}, {"height_mm", {100.0, 104.0}}, {"azimuth_rad", {0.0, 0.5}}};
   log["knots"] = nlohmann::json::array();
   for (std::size_t k = 0; k < 2 * kMaxLogKnots; ++k) log["knots"].push_back(knot);
   writeText(file, log.dump());
-  expectRefused("render-board " + file.string() + " --out " + (dir_ / "out" / "board.png").string() + " --res 64",
-                "log file .*many-knots.kerflog holds 20000 knots; Kerf takes at most 10000 knots in a log");
+  expectRefused(
+      "render-board " + file.string() + " --out " + (dir_ / "out" / "board.png").string() + " --res 64",
+      "log file .*many-knots.kerflog holds 20000 knots; Kerf takes at most 10000 knots in a log");
   // A log made otherwise is held to the same budget when its knot field is built.
   LogModel big = generateRandomLog(options);
   ASSERT_FALSE(big.knots.empty());
@@ -208,8 +209,9 @@ TEST_F(WorkBudgets, ProjectOfTooManyKnotsIsRefusedNamingTheFile) {
   const nlohmann::json knot = json["knots"][0];
   for (std::size_t k = 1; k < 5 * kMaxBlockKnots; ++k) json["knots"].push_back(knot);
   writeText(file, json.dump());
-  expectRefused("render-faces " + file.string() + " --out " + (dir_ / "out").string() + " --px-per-mm 0.5",
-                "project .*many-knots.kerf: knots holds 5000 knots; Kerf takes at most 1000 knots in a block");
+  expectRefused(
+      "render-faces " + file.string() + " --out " + (dir_ / "out").string() + " --px-per-mm 0.5",
+      "project .*many-knots.kerf: knots holds 5000 knots; Kerf takes at most 1000 knots in a block");
   std::vector<BlockKnot> knots(kMaxBlockKnots + 1);
   EXPECT_NE(errorOf([&] { BlockKnots(knots, KnotSettings{}, 2.0f); }).find("1001 knots"), std::string::npos);
 }

@@ -81,8 +81,10 @@ TEST(ColourFit, RecoversTheColoursOfASyntheticBlock) {
       }
     for (int late = 0; late < 2; ++late) {
       ASSERT_GT(counts[late], 100);
-      const glm::vec3 shown(sums[1][late] / double(counts[late])), truthShown(sums[0][late] / double(counts[late]));
-      EXPECT_LT(colourError(shown, truthShown), 0.03) << faceLetter(face) << (late ? " latewood" : " earlywood");
+      const glm::vec3 shown(sums[1][late] / double(counts[late])),
+          truthShown(sums[0][late] / double(counts[late]));
+      EXPECT_LT(colourError(shown, truthShown), 0.03)
+          << faceLetter(face) << (late ? " latewood" : " earlywood");
     }
   }
 }
@@ -118,7 +120,6 @@ WoodParameters bandedRings(WoodParameters p) {
   p.ringProfile4 = -0.3f, p.ringProfile5 = -0.1f, p.ringProfile6 = 0.0f, p.ringProfile7 = 0.3f;
   return p;
 }
-
 
 // Renders the six faces of a block, fits the colours of `start` to them with the field of `fitRates`,
 // and gives the luminance spread (ring contrast) of the fitted faces over that of the photos, the worst
@@ -163,11 +164,12 @@ TEST(ColourFit, LearnsTheShadingWithinTheYear) {
   truth.params = bandedRings(truth.params);
   const GrowthRates rates = truth.effectiveRates();
   const ProfileFit fit = fitToRenderedFaces(truth, withoutProfile(truth.params), truth.block, rates, rates);
-  std::printf("[colour] ring profile %.2f %.2f %.2f %.2f %.2f %.2f %.2f %.2f; spread ratio %.2f-%.2f; mean "
-              "|difference| %.4f\n",
-              fit.params.ringProfile0, fit.params.ringProfile1, fit.params.ringProfile2, fit.params.ringProfile3,
-              fit.params.ringProfile4, fit.params.ringProfile5, fit.params.ringProfile6, fit.params.ringProfile7,
-              fit.worstSpreadRatio, fit.bestSpreadRatio, fit.meanAbs);
+  std::printf(
+      "[colour] ring profile %.2f %.2f %.2f %.2f %.2f %.2f %.2f %.2f; spread ratio %.2f-%.2f; mean "
+      "|difference| %.4f\n",
+      fit.params.ringProfile0, fit.params.ringProfile1, fit.params.ringProfile2, fit.params.ringProfile3,
+      fit.params.ringProfile4, fit.params.ringProfile5, fit.params.ringProfile6, fit.params.ringProfile7,
+      fit.worstSpreadRatio, fit.bestSpreadRatio, fit.meanAbs);
   EXPECT_GT(fit.worstSpreadRatio, 0.9);
   EXPECT_LT(fit.bestSpreadRatio, 1.1);
   EXPECT_LT(fit.meanAbs, 0.015);
@@ -241,7 +243,8 @@ TEST(ColourFit, HandWrittenDerivativesMatchAutomaticDifferentiation) {
   }
   ASSERT_TRUE(byHand.Evaluate(parameters, residualsByHand, byHandPointers));
   ASSERT_TRUE(automatic.Evaluate(parameters, residualsAutomatic, automaticPointers));
-  for (int r = 0; r < 4; ++r) EXPECT_NEAR(residualsByHand[r], residualsAutomatic[r], 1e-12) << "residual " << r;
+  for (int r = 0; r < 4; ++r)
+    EXPECT_NEAR(residualsByHand[r], residualsAutomatic[r], 1e-12) << "residual " << r;
   int nonZero = 0;
   for (int b = 0; b < 7; ++b)
     for (int i = 0; i < 4 * kSizes[b]; ++i) {
@@ -254,7 +257,8 @@ TEST(ColourFit, HandWrittenDerivativesMatchAutomaticDifferentiation) {
   EXPECT_EQ(nonZero, 108 - 30) << "the test's points leave some derivatives at zero, untested";
 
   // Blocks held constant get no Jacobian; the residuals alone are the same.
-  double* some[7] = {byHandPointers[0], nullptr, nullptr, byHandPointers[3], nullptr, nullptr, byHandPointers[6]};
+  double* some[7] = {byHandPointers[0], nullptr, nullptr,          byHandPointers[3],
+                     nullptr,           nullptr, byHandPointers[6]};
   ASSERT_TRUE(byHand.Evaluate(parameters, residualsByHand, some));
   ASSERT_TRUE(byHand.Evaluate(parameters, residualsByHand, nullptr));
   for (int r = 0; r < 4; ++r) EXPECT_NEAR(residualsByHand[r], residualsAutomatic[r], 1e-12);

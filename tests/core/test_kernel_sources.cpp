@@ -3,8 +3,8 @@
 // most departures; these are the ones that would compile on both sides and silently differ.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -64,7 +64,8 @@ TEST(KernelSources, NoPreprocessorLines) {
 TEST(KernelSources, NoFunctionIsDefinedTwice) {
   // GLSL resolves overloads by exact types, C++ by conversions: an int and a float overload of one name
   // can pick different functions on the two back-ends.
-  const std::regex definition(R"(^(float|int|uint|bool|vec[234]|ivec[234]|mat3|WoodSample|void)\s+(\w+)\s*\()");
+  const std::regex definition(
+      R"(^(float|int|uint|bool|vec[234]|ivec[234]|mat3|WoodSample|void)\s+(\w+)\s*\()");
   std::vector<std::string> names;
   for (const auto& file : sharedKernelFiles()) {
     std::ifstream in(file);

@@ -95,7 +95,8 @@ double orientationAgreement(const Image& render, const Image& truth) {
   double num = 0, den = 0;
   for (int y = kBorder; y < tr.rows - kBorder; ++y)
     for (int x = kBorder; x < tr.cols - kBorder; ++x) {
-      num += cp.at<float>(y, x) * cr.at<float>(y, x) * std::cos(2 * (tp.at<float>(y, x) - tr.at<float>(y, x)));
+      num +=
+          cp.at<float>(y, x) * cr.at<float>(y, x) * std::cos(2 * (tp.at<float>(y, x) - tr.at<float>(y, x)));
       den += cp.at<float>(y, x) * cp.at<float>(y, x);
     }
   return num / (den + 1e-12);
@@ -126,7 +127,8 @@ TEST(PhotoTrue, HeldOutFaceResemblesTheTruthBetterThanUnrelatedImages) {
     // flat image of its mean colour.
     const Image unrelated = rotatedQuarter(truth);
     Image flat(kSide, kSide, 3);
-    const cv::Scalar mean = cv::mean(cv::Mat(kSide, kSide, CV_32FC3, const_cast<float*>(truth.pixels.data())));
+    const cv::Scalar mean =
+        cv::mean(cv::Mat(kSide, kSide, CV_32FC3, const_cast<float*>(truth.pixels.data())));
     for (int i = 0; i < kSide * kSide; ++i)
       for (int c = 0; c < 3; ++c) flat.pixels[i * 3 + c] = static_cast<float>(mean[c]);
     const double corr = bandPassCorrelation(predicted, truth);
@@ -158,7 +160,8 @@ TEST(PhotoTrue, SlantedCutFollowsTheField) {
     Image out(side, side, 3);
     for (int y = 0; y < side; ++y)
       for (int x = 0; x < side; ++x)
-        std::copy_n(image.pixel((image.width - side) / 2 + x, (image.height - side) / 2 + y), 3, out.pixel(x, y));
+        std::copy_n(image.pixel((image.width - side) / 2 + x, (image.height - side) / 2 + y), 3,
+                    out.pixel(x, y));
     return out;
   };
   const Image a = centre(cut), b = centre(truth);
@@ -168,7 +171,8 @@ TEST(PhotoTrue, SlantedCutFollowsTheField) {
   EXPECT_GT(orientationAgreement(a, b), 0.7);
   EXPECT_GT(bandPassCorrelation(a, b), 0.5);
   // Transparent outside the block, as renderCut.
-  for (std::size_t i = 0; i < cut.pixels.size(); i += 4) EXPECT_EQ(cut.pixels[i + 3] == 0.0f, truth.pixels[i + 3] == 0.0f);
+  for (std::size_t i = 0; i < cut.pixels.size(); i += 4)
+    EXPECT_EQ(cut.pixels[i + 3] == 0.0f, truth.pixels[i + 3] == 0.0f);
 }
 
 TEST(PhotoTrue, DeterministicForASeedWhateverTheThreads) {

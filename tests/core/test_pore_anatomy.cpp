@@ -116,13 +116,14 @@ TEST(PoreAnatomy, NoCutAtAnyAngleShowsALattice) {
   std::string worstCut;
   for (float tilt : {0.0f, 20.0f, 45.0f, 70.0f, 90.0f})
     for (float turn : {0.0f, 30.0f, 90.0f}) {
-      const glm::vec3 across = rotated(x, z, turn);     // a direction across the fibres
+      const glm::vec3 across = rotated(x, z, turn);                      // a direction across the fibres
       const glm::vec3 second = rotated(glm::cross(across, y), y, tilt);  // from across-grain to along-grain
       const glm::vec3 v = glm::normalize(second), normal = glm::cross(across, v);
       cv::Mat power = cv::Mat::zeros(kSize, kSize, CV_64F);
       for (int k = 0; k < 4; ++k) power += powerSpectrum(poreImage(model, across, v, (1.7f * k) * normal));
       const double ratio = spectralPeakRatio(power);
-      if (ratio > worst) worst = ratio, worstCut = "tilt " + std::to_string(tilt) + ", turn " + std::to_string(turn);
+      if (ratio > worst)
+        worst = ratio, worstCut = "tilt " + std::to_string(tilt) + ", turn " + std::to_string(turn);
     }
   std::printf("strongest spectral peak / median power around it: %.1f (%s)\n", worst, worstCut.c_str());
   constexpr double kMaxPeakRatio = 20.0;
@@ -175,7 +176,8 @@ TEST(PoreAnatomy, RingPorousWoodPacksItsVesselsInTheEarlywood) {
   int early = 0, late = 0;
   for (int y = 0; y < kSize; ++y)  // an end-grain cut
     for (int x = 0; x < kSize; ++x) {
-      const WoodSample s = model.evaluate({(x - 0.5f * kSize) * kPixelMm, 0.0f, (y - 0.5f * kSize) * kPixelMm});
+      const WoodSample s =
+          model.evaluate({(x - 0.5f * kSize) * kPixelMm, 0.0f, (y - 0.5f * kSize) * kPixelMm});
       (s.latewood < 0.5f ? poreEarly : poreLate) += s.pore;
       ++(s.latewood < 0.5f ? early : late);
     }

@@ -261,8 +261,8 @@ TEST(Presets, SpeciesOfAMokumeSampleFromItsName) {
   EXPECT_EQ(builtInPresetForSampleName("CN03")->id, "kuri");
   EXPECT_EQ(builtInPresetForSampleName("h11")->id, "hinoki");
   EXPECT_EQ(builtInPresetForSampleName("BW2")->id, "black_walnut");
-  EXPECT_EQ(builtInPresetForSampleName("CN"), nullptr);       // no number: not a sample name
-  EXPECT_EQ(builtInPresetForSampleName("XY03"), nullptr);     // no such species
+  EXPECT_EQ(builtInPresetForSampleName("CN"), nullptr);    // no number: not a sample name
+  EXPECT_EQ(builtInPresetForSampleName("XY03"), nullptr);  // no such species
   EXPECT_EQ(builtInPresetForSampleName("my_block"), nullptr);
   EXPECT_EQ(builtInPresetForSampleName(""), nullptr);
 }

@@ -147,7 +147,8 @@ TEST(Schema, GroupsAreDeclaredOnceAndHoldContiguousParameters) {
     if (i + 1 < schema.size() && schema[i + 1].group != schema[i].group) closed.insert(schema[i].group);
   }
   for (const ParamGroup& group : parameterGroups())
-    EXPECT_TRUE(std::any_of(schema.begin(), schema.end(), [&](const ParamSpec& s) { return s.group == group.id; }))
+    EXPECT_TRUE(
+        std::any_of(schema.begin(), schema.end(), [&](const ParamSpec& s) { return s.group == group.id; }))
         << "empty group " << group.id;
 }
 

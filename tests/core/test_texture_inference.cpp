@@ -82,8 +82,9 @@ TEST(TextureInference, RecoversKnownDetailOfASyntheticBlock) {
   // (how much of the wood they cover, how clustered), not both scales apart. Measured with this seed:
   // radius 0.066 mm, spacing 0.21 mm for a truth of 0.12 / 0.40 (ratio 0.315 vs 0.30); with the old
   // lattice both came out within 25 %.
-  EXPECT_LT(relativeError(r.params.poreRadiusEarly / r.params.poreCellSize, t.poreRadiusEarly / t.poreCellSize),
-            0.25);
+  EXPECT_LT(
+      relativeError(r.params.poreRadiusEarly / r.params.poreCellSize, t.poreRadiusEarly / t.poreCellSize),
+      0.25);
   // Ray spacing: 0.99 mm for 0.9 before the streak-length term, 1.12 mm (25 % off, at the bound) with it;
   // the term judges the side faces' pores and fibres, and the rays are faint in this block.
   EXPECT_LT(relativeError(r.params.raySpacing, t.raySpacing), 0.25);
@@ -183,7 +184,8 @@ TEST(DetailSpace, ComesFromTheSchemaAndChangesOnlyTextureFittedParameters) {
   }
   const WoodParameters params = demoProject(7).params;
   for (const double u : {0.0, 1.0}) {
-    const WoodParameters moved = decodeDetail(params, coordinates, std::vector<double>(coordinates.size(), u));
+    const WoodParameters moved =
+        decodeDetail(params, coordinates, std::vector<double>(coordinates.size(), u));
     EXPECT_GT(test::expectOnlyFittedParametersChanged(params, moved, FitBy::Texture), 10) << "u = " << u;
   }
 }
