@@ -49,11 +49,8 @@ KNOWN_DEBT = {
     ("render", "io"): "render/*.hpp use the Image type of io/image.hpp (image types apart from file "
     "formats: a core/image/ folder below render), and render/wood_model.cpp builds a WoodModel from "
     "io/project.hpp's Project (the Project type below render, or that constructor in io/)",
-    ("render", "export"): "render/volume_export.cpp uses export/volume_writer.hpp and file_extension.hpp: "
-    "volume export belongs with the other exporters in export/",
     ("rings", "io"): "rings/ uses io/image.hpp and io/gray_image.hpp (to core/image/) and "
     "io/atomic_file.hpp (to util/)",
-    ("mesh", "export"): "mesh/mesh_loader.cpp uses export/file_extension.hpp (to util/)",
 }
 
 # Qt or OpenGL headers, which core must never include (core/ builds without them).

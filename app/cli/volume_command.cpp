@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "export/volume_export.hpp"
 #include "io/project.hpp"
 #include "number_option.hpp"
-#include "render/volume_export.hpp"
 
 namespace kerf::cli {
 

@@ -276,21 +276,21 @@ void MainWindow::showFitResiduals(const GrowthFitResult& fit) {
 
 void MainWindow::useOtherPithCandidate() {
   if (!lastFit_ || !lastFit_->alternative) return;
-  GrowthFitResult swapped = *lastFit_;
-  const GrowthFitResult::Alternative other = *swapped.alternative;
-  swapped.alternative =
-      GrowthFitResult::Alternative{swapped.params, swapped.rates, swapped.lossRings, swapped.knots};
-  swapped.params = other.params;
-  swapped.rates = other.rates;
-  swapped.lossRings = other.lossRings;
-  swapped.knots = other.knots;
+  // On the heap: a local copy made GCC 12 warn of the optional's payload (a false maybe-uninitialized).
+  const auto swapped = std::make_shared<GrowthFitResult>(*lastFit_);
+  GrowthFitResult::Alternative& other = *swapped->alternative;
+  std::swap(swapped->params, other.params);
+  std::swap(swapped->rates, other.rates);
+  std::swap(swapped->lossRings, other.lossRings);
+  std::swap(swapped->knots, other.knots);
   try {
-    document_->applyGrowthField(swapped.params, swapped.rates, tr("Use other pith candidate"), swapped.knots);
+    document_->applyGrowthField(swapped->params, swapped->rates, tr("Use other pith candidate"),
+                                swapped->knots);
   } catch (const InputError& e) {
     showError(tr("The other pith candidate is not a valid field: %1").arg(QString::fromUtf8(e.what())));
     return;
   }
-  lastFit_ = std::make_shared<const GrowthFitResult>(std::move(swapped));
+  lastFit_ = swapped;
   logMessage("info",
              tr("Using the other pith candidate: iso-contour loss %1 ring spacings (again to switch back)")
                  .arg(lastFit_->lossRings, 0, 'f', 4));

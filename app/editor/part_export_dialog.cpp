@@ -16,9 +16,9 @@
 #include <QSpinBox>
 #include <initializer_list>
 
-#include "export/file_extension.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 
 namespace kerf {
 namespace {

@@ -28,7 +28,12 @@ void reconstructFromPhotos(const ReconstructInput& input, const Progress& progre
   clearFaces(photos, input.heldOut);
   const auto rings =
       std::make_shared<const RingDetection>(detectRings(photos, input.block, progress.part(0.0, kRingsEnd)));
-  send({ReconstructStage::Rings, false, rings});
+  {
+    ReconstructEvent event;
+    event.stage = ReconstructStage::Rings;
+    event.rings = rings;
+    send(event);
+  }
   progress.throwIfCancelled();
 
   // 2. The growth field, fitted to those traces (and the user's own) as Fit Growth Field does.

@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include "export/file_extension.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 
 namespace kerf {
 namespace {

@@ -2,7 +2,7 @@
 // One export, as `kerf-cli export` and the editor's File > Export dialogs describe it: what to write is
 // picked from the output path's extension (docs/export.md):
 //   .png .tif .tiff .exr   a face (face) or a cut (plane) image with layers (export/image_export.hpp)
-//   .nrrd .vdb             a volume of the growth field or the colour (render/volume_export.hpp)
+//   .nrrd .vdb             a volume of the growth field or the colour (export/volume_export.hpp)
 //   a folder               a depth stack (depthStack set; export/depth_stack.hpp)
 //   .obj .glb              a textured part: a placed mesh baked with the wood (export/part_export.hpp)
 #include <cstddef>
@@ -13,7 +13,7 @@
 #include "export/depth_stack.hpp"
 #include "export/image_export.hpp"
 #include "export/part_export.hpp"
-#include "render/volume_export.hpp"
+#include "export/volume_export.hpp"
 
 namespace kerf {
 

@@ -7,10 +7,10 @@
 #include <limits>
 #include <sstream>
 
-#include "export/file_extension.hpp"
 #include "io/atomic_file.hpp"
 #include "render/renderers.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 #include "util/parallel.hpp"
 #include "util/size_limits.hpp"
 

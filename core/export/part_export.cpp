@@ -1,12 +1,12 @@
 #include "export/part_export.hpp"
 
-#include "export/file_extension.hpp"
 #include "export/part_writers.hpp"
 #include "mesh/bake_part_texture.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "mesh/uv_atlas.hpp"
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 
 namespace kerf {
 

@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "export/file_extension.hpp"
 #include "export/vdb_writer.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 
 namespace kerf {
 namespace {

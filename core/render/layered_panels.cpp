@@ -156,7 +156,7 @@ CltPanel makeCltPanel(const LogModel& log, glm::vec3 size, int layers, float lam
   // would ask for more boards than memory holds, and 1e30 does not fit an int (issue 21).
   const double lamellasPerLayer = std::ceil(double(std::max(size.x, size.y)) / lamellaWidth);
   if (!(lamellasPerLayer <= kMaxLamellasPerLayer) || !(size.z / layers >= kMinPanelSideMm)) {
-    char text[200];
+    char text[400];
     std::snprintf(text, sizeof text,
                   "CLT: %g mm lamellas in a %g x %g mm panel of %d layers would make %.3g lamellas a layer, "
                   "%g mm thick; Kerf makes up to %d lamellas a layer, at least %g mm thick",

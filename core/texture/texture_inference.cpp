@@ -14,9 +14,11 @@ namespace kerf {
 namespace {
 
 std::string format(const char* fmt, auto... args) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, fmt, args...);
-  return buffer;
+  const int length = std::snprintf(nullptr, 0, fmt, args...);  // report lines are of any length
+  std::string text(static_cast<std::size_t>(std::max(length, 0)) + 1, '\0');
+  std::snprintf(text.data(), text.size(), fmt, args...);
+  text.pop_back();
+  return text;
 }
 
 WoodParameters scaledSizes(const WoodParameters& start, const std::array<float, 3>& factors) {
@@ -202,7 +204,8 @@ std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResu
   lines.push_back(format(
       "texture, per face (%s), before -> after: grain direction agreement (1 = the photo's), "
       "contrast (1 = the photo's), ring figure correlation, streak length difference (0 = the photo's), "
-      "style distance, mean |render - photo|",
+      "where in the ring the pores sit (difference, 0 = as in the photo), style distance, mean |render - "
+      "photo|",
       r.fullFaces ? "whole faces" : "crops"));
   for (FaceId face : kAllFaces) {
     const FaceTextureReport& f = r.faces[faceIndex(face)];
@@ -210,10 +213,11 @@ std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResu
     std::string line = format(
         "  %c  %-26s (%4.1f deg to the pith)  grain %.2f -> %.2f   contrast %.2f -> %.2f   figure %.2f -> "
         "%.2f"
-        "   streaks %.2f -> %.2f   style %.3f -> %.3f   L1 %.4f -> %.4f",
+        "   streaks %.2f -> %.2f   pore band %.2f -> %.2f   style %.3f -> %.3f   L1 %.4f -> %.4f",
         faceLetter(face), faceGrainName(f.orientation.grain).c_str(), f.orientation.angleToPithDeg,
         f.before.grain, f.after.grain, f.before.contrast, f.after.contrast, f.before.figure, f.after.figure,
-        f.before.streak, f.after.streak, f.before.style, f.after.style, f.before.l1, f.after.l1);
+        f.before.streak, f.after.streak, f.before.band, f.after.band, f.before.style, f.after.style,
+        f.before.l1, f.after.l1);
     if (r.fullFaces) line += format("   L1 at 1 mm %.4f -> %.4f", f.before.l1Blurred, f.after.l1Blurred);
     lines.push_back(line);
   }

@@ -18,9 +18,9 @@
 #include "autosave.hpp"
 #include "demo/demo_block.hpp"
 #include "document.hpp"
+#include "export/volume_export.hpp"
 #include "io/project.hpp"
 #include "main_window.hpp"
-#include "render/volume_export.hpp"
 #include "render/wood_model.hpp"
 
 using namespace kerf;

@@ -201,7 +201,9 @@ TEST(ExportImage, RingLinesLieOnTheRingLevels) {
       ++onLine;
       ASSERT_LT(years, 0.2f);
     }
-    if (years > 0.45f) ASSERT_EQ(ring, 0.0f);
+    if (years > 0.45f) {
+      ASSERT_EQ(ring, 0.0f);
+    }
   }
   const double share = double(onLine) / image.growth.pixels.size();
   EXPECT_GT(share, 0.01);  // rings are there, and thin

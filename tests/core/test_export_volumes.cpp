@@ -13,8 +13,8 @@
 #include "demo/demo_block.hpp"
 #include "export/depth_stack.hpp"
 #include "export/export_job.hpp"
+#include "export/volume_export.hpp"
 #include "io/nrrd_writer.hpp"
-#include "render/volume_export.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;

@@ -34,7 +34,7 @@ TEST(ProjectLog, RoundTripsThroughTheProjectFile) {
 }
 
 TEST(ProjectLog, ProjectsWithoutALogStayWithout) {
-  const nlohmann::json json = projectToJson(Project{}, "/tmp");
+  const nlohmann::json json = projectToJson(Project(), "/tmp");
   EXPECT_FALSE(json.contains("log"));
   EXPECT_FALSE(projectFromJson(json, "/tmp").log.has_value());
 }

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "demo/demo_block.hpp"
+#include "export/volume_export.hpp"
 #include "io/nrrd_writer.hpp"
-#include "render/volume_export.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;

@@ -1,4 +1,4 @@
-#include "render/volume_export.hpp"
+#include "export/volume_export.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include "export/file_extension.hpp"
 #include "export/volume_writer.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 #include "util/parallel.hpp"
 #include "util/size_limits.hpp"
 
