@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "util/error.hpp"
@@ -148,6 +149,7 @@ void validate(const LogModel& log) {
     if (!(r > 0.0f) || !std::isfinite(r))
       throw InputError("log: every stem radius must be a positive number");
   }
+  checkPlausibleRadii(s.radii, s.azimuths, "log");
   for (std::size_t k = 0; k < log.knots.size(); ++k) {
     const Knot& knot = log.knots[k];
     const std::string name = "log: knot " + std::to_string(k);
@@ -168,6 +170,25 @@ void validate(const LogModel& log) {
       throw InputError(name + " starts at height " + std::to_string(z0) + " mm, outside the stem (0 to " +
                        std::to_string(s.height()) + " mm)");
     }
+  }
+}
+
+void checkPlausibleRadii(const std::vector<float>& radii, int azimuths, const std::string& where) {
+  if (radii.empty() || azimuths < 1) return;
+  std::vector<float> sorted = radii;
+  const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+  std::nth_element(sorted.begin(), middle, sorted.end());
+  const float median = *middle;
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const float r = radii[i];
+    if (r <= median * kPlausibleRadiusFactor && r >= median / kPlausibleRadiusFactor) continue;
+    std::ostringstream text;
+    text << where << ": the stem radius " << r << " mm at slice " << i / static_cast<std::size_t>(azimuths)
+         << ", azimuth " << i % static_cast<std::size_t>(azimuths)
+         << " is not plausible: the log's median radius is " << median
+         << " mm, and a stem's radius stays within " << kPlausibleRadiusFactor
+         << "x of it (a measurement error?)";
+    throw InputError(text.str());
   }
 }
 

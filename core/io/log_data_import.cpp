@@ -131,6 +131,8 @@ LogModel importGranJson(const fs::path& folder, const LogImportOptions& options)
   }
   float rmin = *std::min_element(raw.begin(), raw.end()), rmax = *std::max_element(raw.begin(), raw.end());
   if (!(rmin > 0.0f)) throw InputError(radiiPath.string() + ": radii must be positive");
+  // Before the smoothing, which would spread one wrong sample over its neighbours.
+  checkPlausibleRadii(raw, stem.azimuths, radiiPath.string());
   if (options.smoothJsonRadii) {
     // The maps' box blur: +-5 slices (clamped here at the ends) x +-2 degrees (periodic).
     const int hz = 5, ha = std::max(1, stem.azimuths / 180);

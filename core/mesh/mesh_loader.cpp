@@ -12,11 +12,11 @@
 #include <sstream>
 #include <system_error>
 
-#include "export/file_extension.hpp"
 #include "io/input_file.hpp"
 #include "mesh/mesh_normals.hpp"
 #include "mesh/mesh_topology.hpp"
 #include "util/error.hpp"
+#include "util/file_extension.hpp"
 
 namespace kerf {
 
@@ -118,6 +118,21 @@ Mesh loadMesh(const std::filesystem::path& path) {
   for (const glm::vec3& p : mesh.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError("mesh " + name + " has a vertex with a coordinate that is not a number");
+  // A part without area (every triangle degenerate) is no surface to cut or texture (issue 21: such a
+  // mesh was exported). Degenerate slivers among real triangles are common in CAD output and are kept.
+  double area = 0.0;
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
+    area += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  glm::dvec3 lo(mesh.positions.front()), hi = lo;
+  for (const glm::vec3& p : mesh.positions)
+    lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+  const double extent = glm::length(hi - lo);
+  if (!(area > 1e-9 * extent * extent)) {  // relative: corners on a line up to float rounding
+    throw InputError("mesh " + name + " has no area: all its " + std::to_string(mesh.triangles.size()) +
+                     " triangles are degenerate (their corners lie on a line or a point)");
+  }
   smoothNormalsAndJoinVertices(mesh, needsNormal, kSmoothingAngleDeg);
   // A non-manifold part has no inside and outside for the CNC planner, and the bake would texture its
   // internal faces: refuse it, saying where. Open meshes are only warned about (exportPart).

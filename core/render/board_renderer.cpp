@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <sstream>
 #include <vector>
@@ -131,9 +132,26 @@ Board boardAlongKnot(const LogModel& log, int knot, glm::vec3 size) {
   return b;
 }
 
+void checkBoardMeetsLog(const LogModel& log, const Board& board) {
+  const Stem& stem = log.stem;
+  const float reach = 0.5f * glm::length(board.size);  // the board lies inside this sphere
+  glm::vec2 pithLo, pithHi;
+  stem.pithRange(0.0f, stem.height(), pithLo, pithHi);
+  const glm::vec2 centre(board.center.x, board.center.y);
+  const float fromPith = glm::length(centre - glm::clamp(centre, pithLo, pithHi));
+  const bool missesHeight = board.center.z + reach < 0.0f || board.center.z - reach > stem.height();
+  if (!missesHeight && fromPith - reach <= stem.maxRadius()) return;
+  std::ostringstream text;
+  text << "the board (centre " << board.center.x << ", " << board.center.y << ", " << board.center.z
+       << " mm) lies entirely outside the log: the stem spans heights 0 to " << stem.height()
+       << " mm and reaches at most " << stem.maxRadius() << " mm from its pith";
+  throw InputError(text.str());
+}
+
 BoardFaceLayout layoutBoardFace(const KnotField& field, const Board& board,
                                 const BoardRenderOptions& options) {
   if (options.resolution < 1) throw InputError("the resolution must be at least 1 pixel");
+  checkBoardMeetsLog(field.log(), board);
   BoardFaceLayout layout;
   const Block block = board.block();
   const FaceFrame frame = block.face(options.face);

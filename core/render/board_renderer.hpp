@@ -43,6 +43,11 @@ Board boardAcrossKnot(const LogModel& log, int knot, float faceDistanceMm, glm::
 // along its length), the face spanning from the pith outward.
 Board boardAlongKnot(const LogModel& log, int knot, glm::vec3 size);
 
+// Throws InputError unless the board can meet the log (issue 21: a board 1 km away rendered flat wood
+// without a word). Conservative: refuses only a board whose bounding sphere misses the stem's bounding
+// cylinder, so a board half out of the log (bark side) still renders.
+void checkBoardMeetsLog(const LogModel& log, const Board& board);
+
 struct BoardRenderOptions {
   FaceId face = FaceId::A;
   int resolution = 1200;  // pixels along the face's longer side

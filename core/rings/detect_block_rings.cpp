@@ -35,6 +35,12 @@ std::string BlockRingDetection::countsText() const {
 }
 
 void checkRingDetectionSize(int width, int height, const std::string& what) {
+  if (width < kMinRingDetectionSide || height < kMinRingDetectionSide) {
+    // Issue 21: a 1 x 1 face was refused without naming the face or its file.
+    throw InputError(what + " is " + std::to_string(width) + " x " + std::to_string(height) +
+                     " px; ring detection needs at least " + std::to_string(kMinRingDetectionSide) + " x " +
+                     std::to_string(kMinRingDetectionSide) + " px (Mokume's faces are 256 px a side)");
+  }
   const long long pixels = static_cast<long long>(width) * height;
   if (pixels <= kMaxRingDetectionPixels) return;
   std::ostringstream s;

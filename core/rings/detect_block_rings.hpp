@@ -41,8 +41,10 @@ struct BlockRingDetection {
 // shared 2-core machine of docs/reliability.md). 2 megapixels a face keeps six faces to about a minute
 // there; Mokume's faces are 256 px.
 inline constexpr long long kMaxRingDetectionPixels = 2'000'000;
-// Throws InputError naming `what` (a photo's file, or "the photo of face A"), its size and the budget
-// unless a width x height photo is within kMaxRingDetectionPixels.
+// The ring detector's own minimum (its filters need a few pixels each way).
+inline constexpr int kMinRingDetectionSide = 4;
+// Throws InputError naming `what` (a photo's file, or "the photo of face A"), its size and the bound
+// unless a width x height photo is within kMaxRingDetectionPixels and kMinRingDetectionSide a side.
 void checkRingDetectionSize(int width, int height, const std::string& what);
 
 // Detects the rings on each face photo (A..F; empty photos are skipped) except the held-out faces (their

@@ -185,6 +185,15 @@ const BadInput kCatalogue[] = {
        });
      },
      openSample, "B_col.png is 16 x 24 px", kDetect},
+    {"PhotosOfOnePixel",  // issue 21: refused without naming the face or the file
+     [](const fs::path& d) {
+       return sampleWith(d, [](const fs::path& s) {
+         for (const char* face : {"A", "B", "C", "D", "E", "F"})
+           writePhoto(s / (std::string(face) + "_col.png"), 1, 1);
+         return s / "A_col.png";
+       });
+     },
+     nullptr, "is 1 x 1 px; ring detection needs at least 4 x 4 px", kDetect},
     // --- sample folders ---
     {"SampleFolderEmpty", [](const fs::path& d) { return d; }, openDocument,
      "holds no face photos \\(expected A_col.png .. F_col.png\\)", kDetect},
@@ -315,6 +324,23 @@ const BadInput kCatalogue[] = {
     {"LogKnotOutsideTheStem",
      [](const fs::path& d) { return logFile(d, replaceAll(kGoodLog, "[100, 104]", "[5000, 5004]")); },
      openLog, "knot 0 starts at height 5000.* mm, outside the stem \\(0 to 200.* mm\\)", kRenderBoard},
+    {"LogStemRadiusImplausible",  // issue 21: one CT radius of 1e30 changed the whole board
+     [](const fs::path& d) {
+       return logFile(d, replaceAll(kGoodLog, "[50, 50, 50, 50, 50,", "[50, 50, 50, 50, 1e30,"));
+     },
+     openLog,
+     "the stem radius 1e\\+30 mm at slice 1, azimuth 1 is not plausible: the log's median radius is 50 mm",
+     kRenderBoard},
+    {"LogGranJsonRadiusImplausible",
+     [](const fs::path& d) {
+       writeText(d / "Gran_1_pith.json", "[[0, 0, 0], [0, 0, 100], [0, 0, 200]]");
+       writeText(d / "Gran_1_radii.json", "[[100, 100, 100], [100, 100, 100], [100, 100, 1e30]]");
+       writeText(d / "Gran_1_knots.json", "[]");
+       return d / "Gran_1_radii.json";
+     },
+     [](const fs::path& p) { openLog(p.parent_path()); },
+     "the stem radius 1e\\+30 mm at slice 2, azimuth 2 is not plausible",
+     "render-board {dir} --out {out}/board.png --res 64"},
     {"LogMapsMissing",
      [](const fs::path& d) {
        writeText(d / "map_params.json", "[10, 100, 1000, 1]");
@@ -362,6 +388,13 @@ const BadInput kCatalogue[] = {
        return d / "points.obj";
      },
      [](const fs::path& p) { (void)loadMesh(p); }, "has no faces", kExportPart},
+    {"MeshOfZeroAreaTriangles",  // issue 21: such a part was exported
+     [](const fs::path& d) {
+       writeText(d / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\nf 1 2 4\n");
+       return d / "flat.obj";
+     },
+     [](const fs::path& p) { (void)loadMesh(p); }, "has no area: all its 3 triangles are degenerate",
+     kExportPart},
     // --- outputs ---
     {"OutputFolderMissing", [](const fs::path& d) { return d / "no-such-folder"; }, nullptr,
      "folder .*no-such-folder does not exist", "export {dir}/../demo.kerf --face A --out {file}/A.png"},

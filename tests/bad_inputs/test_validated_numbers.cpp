@@ -170,6 +170,16 @@ const CliCase kBudgetCases[] = {
 
 INSTANTIATE_TEST_SUITE_P(BudgetsBeforeAllocating, CliNumbers, ::testing::ValuesIn(kBudgetCases));
 
+// Valid numbers that describe nothing real (issue 21): each needs a rule of its own.
+const CliCase kImplausibleCases[] = {
+    {"render-board random:1 --out {dir}/x.png --res 16 --board 1000000,0,500,100,100,30",
+     "the board \\(centre 1e\\+06, 0, 500 mm\\) lies entirely outside the log"},
+    {"render-board random:1 --out {dir}/x.png --res 16 --board 0,0,-5000,100,100,30",
+     "lies entirely outside the log: the stem spans heights 0 to"},
+};
+
+INSTANTIATE_TEST_SUITE_P(ImplausibleValues, CliNumbers, ::testing::ValuesIn(kImplausibleCases));
+
 // Numbers in files: the project, log and annotation readers.
 struct FileCase {
   std::string name;

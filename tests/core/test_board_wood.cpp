@@ -2,10 +2,14 @@
 // editor's 3D view and cut panel use per fragment changes no sample, bit for bit.
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <random>
+#include <string>
 
+#include "render/board_renderer.hpp"
 #include "render/board_wood.hpp"
 #include "spruce_log.hpp"
+#include "util/error.hpp"
 
 using namespace kerf;
 
@@ -72,4 +76,36 @@ TEST(BoardWood, GridChangesNoSampleSpruceLog) {
   Board b = defaultBoard(*gran);
   b.rotationDeg += glm::vec3(10.0f, 25.0f, -5.0f);
   checkGridChangesNothing(field, b, "rotated board of the spruce log");
+}
+
+// Issue 21: a board far from the log is refused; one reaching into the stem from outside still renders.
+TEST(BoardWood, BoardOutsideTheLogIsRefusedABoardReachingIntoItIsNot) {
+  const LogModel log = generateRandomLog({.seed = 3, .lengthMm = 1000.0f, .radiusMm = 100.0f});
+  const float r = log.stem.maxRadius();
+  Board board;
+  board.size = {100.0f, 100.0f, 30.0f};
+  const float reach = 0.5f * glm::length(board.size);
+  board.center = {r + reach - 5.0f, 0.0f, 500.0f};  // its corner region reaches 5 mm into the stem's bound
+  EXPECT_NO_THROW(checkBoardMeetsLog(log, board));
+  board.center = {1.0e6f, 0.0f, 500.0f};
+  EXPECT_THROW(checkBoardMeetsLog(log, board), InputError);
+  board.center = {0.0f, 0.0f, log.stem.height() + reach + 1.0f};  // above the log's top slice
+  EXPECT_THROW(checkBoardMeetsLog(log, board), InputError);
+  board.center = {0.0f, 0.0f, -reach + 1.0f};  // overlapping the bottom slice
+  EXPECT_NO_THROW(checkBoardMeetsLog(log, board));
+}
+
+// Issue 21: one wrong stem radius is refused by name; the real CT log's radii all pass (test_log_io).
+TEST(BoardWood, ImplausibleStemRadiusIsRefusedNamingIt) {
+  LogModel log = generateRandomLog({.seed = 3, .lengthMm = 1000.0f, .radiusMm = 100.0f});
+  EXPECT_NO_THROW(validate(log));
+  log.stem.radii[static_cast<std::size_t>(2 * log.stem.azimuths + 7)] = 1.0e30f;
+  try {
+    validate(log);
+    FAIL() << "a stem radius of 1e30 mm was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1e+30 mm at slice 2, azimuth 7 is not plausible"),
+              std::string::npos)
+        << e.what();
+  }
 }
