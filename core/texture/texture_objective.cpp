@@ -79,6 +79,12 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
     if (options.ringPhaseBins > 0)
       cropLabels_.push_back(
           ringPhaseLabels(model, crop, layout_.imageSize[faceIndex(crop.face)], options.ringPhaseBins));
+    if (options.bandBins > 0) {
+      bandLabels_.push_back(
+          ringPhaseLabels(model, crop, layout_.imageSize[faceIndex(crop.face)], options.bandBins));
+      photoBand_[faceIndex(crop.face)].add(ringBandProfile(
+          photoCrops_.back(), bandLabels_.back(), options.bandBins, layout_.pxPerMm[faceIndex(crop.face)]));
+    }
   }
   cropLocations_.resize(layout_.crops.size());
   parallelRows(static_cast<int>(layout_.crops.size()), [&](int k) {
@@ -136,7 +142,7 @@ double TextureObjective::combine(const std::array<FaceTextureScore, 6>& faces) c
     const double face = faces[i].style + options_.l1Weight * faces[i].l1 +
                         options_.grainWeight * (1.0 - faces[i].grain) +
                         options_.contrastWeight * std::abs(std::log(std::max(faces[i].contrast, 1e-3))) +
-                        options_.figureWeight * (1.0 - faces[i].figure);
+                        options_.figureWeight * (1.0 - faces[i].figure) + options_.bandWeight * faces[i].band;
     // Streak length only on side grain, where the lines are the fibres and the pores cut along them; on
     // end grain they are the rings, whose continuity the figure term already judges.
     if (orientations_[i].grain == FaceGrain::EndGrain)
@@ -174,7 +180,11 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
         std::vector<Image> faceCrops;
         std::vector<std::vector<std::uint8_t>> labels;
         double l1 = 0, grain = 0, contrast = 0, figure = 0, streak = 0;
+        RingBandProfile band;
         for (std::size_t k : cropsOfFace_[face]) {
+          if (options_.bandWeight > 0 && !bandLabels_.empty())
+            band.add(ringBandProfile(rendered[c * crops + k], bandLabels_[k], options_.bandBins,
+                                     layout_.pxPerMm[face]));
           faceCrops.push_back(rendered[c * crops + k]);
           if (!cropLabels_.empty()) labels.push_back(cropLabels_[k]);
           l1 += meanAbsoluteDifference(rendered[c * crops + k], photoCrops_[k]);
@@ -192,6 +202,7 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
         score.contrast = contrast / count;
         score.figure = figure / count;
         score.streak = streak / count;
+        if (options_.bandWeight > 0) score.band = ringBandDifference(band, photoBand_[face]);
         score.style = faceStyle(computeLabelledTextureStatistics(faceCrops, labels, options_.ringPhaseBins,
                                                                  layout_.pxPerMm[face], options_.statistics),
                                 photoStatistics_[face]);
@@ -243,6 +254,13 @@ TextureScore TextureObjective::evaluateFullFaces(const WoodParameters& params,
     };
     const GrainView view = grainViewOf(image, layout_.pxPerMm[i]);
     const GrainView photoView = grainViewOf(photo, layout_.pxPerMm[i]);
+    double band = 0;
+    if (options_.bandBins > 0) {
+      const std::vector<std::uint8_t> bandLabels = ringPhaseLabels(
+          start, FaceCrop{face, 0, 0, image.width, image.height}, layout_.imageSize[i], options_.bandBins);
+      band = ringBandDifference(ringBandProfile(image, bandLabels, options_.bandBins, layout_.pxPerMm[i]),
+                                ringBandProfile(photo, bandLabels, options_.bandBins, layout_.pxPerMm[i]));
+    }
     score.faces[i] = {true,
                       faceStyle(statsOf(image), statsOf(photo)),
                       meanAbsoluteDifference(image, photo),
@@ -250,7 +268,8 @@ TextureScore TextureObjective::evaluateFullFaces(const WoodParameters& params,
                       grainAgreement(view, photoView),
                       contrastRatio(view, photoView),
                       figureCorrelation(view, photoView),
-                      streakDifference(view, photoView)};
+                      streakDifference(view, photoView),
+                      band};
   }
   score.loss = combine(score.faces);
   return score;

@@ -20,6 +20,7 @@
 #include "params/parameter_schema.hpp"
 #include "texture/face_crops.hpp"
 #include "texture/grain_view.hpp"
+#include "texture/ring_band_profile.hpp"
 #include "texture/texture_statistics.hpp"
 #include "util/progress.hpp"
 
@@ -43,6 +44,14 @@ struct TextureLossOptions {
   double figureWeight = 1.0;  // of (1 - figure correlation): the ring figure stays where the field put it
   double streakWeight =
       1.0;  // of the streak-length difference (grain_view.hpp): pores as long as the photo's
+  // Of the ring-band difference (texture/ring_band_profile.hpp): the dark detail (pores) in the same part
+  // of the ring as the photo's, e.g. a band of several rows at the start of the earlywood. Off in the
+  // search (0; the report always shows it): on CN03 a weight of 1 made the band no wider. The model ties
+  // the earlywood pores' band to the earlywood colour's (1 - rings.latewood_fraction), and the search
+  // raised that share with or without the term; with it, it spread the pores over the ring instead
+  // (smaller pores, a slower transition) and the faces looked worse (docs/texture.md).
+  double bandWeight = 0.0;
+  int bandBins = 8;  // parts of the ring for it (about 0.4 mm each on CN03's 3-4 mm rings)
   // Statistics also per part of the ring (ring phase in this many equal parts, from the fitted field), so
   // the loss sees where in the ring pores and latewood sit; 0: pooled over the face only. Off by default:
   // on CN03 three phases did not make the result look closer and made the loss noisier (docs/texture.md).
@@ -62,6 +71,7 @@ struct FaceTextureScore {
   double contrast = 0;  // band-passed contrast over the photo's (1 the same)
   double figure = 0;    // correlation of the ring figure's light and dark bands with the photo's
   double streak = 0;    // streak-length difference from the photo's (0 the same)
+  double band = 0;  // ring-band difference from the photo's (0 the dark detail in the same part of the ring)
 };
 
 struct TextureScore {
@@ -105,6 +115,8 @@ class TextureObjective {
   std::vector<GrainView> photoGrain_;                                // layout_.crops order
   std::array<std::vector<TextureStatistics>, 6> photoStatistics_{};  // per face: pooled, per ring phase
   std::vector<std::vector<std::uint8_t>> cropLabels_;                // ring phase of each crop pixel
+  std::vector<std::vector<std::uint8_t>> bandLabels_;                // the same in options_.bandBins parts
+  std::array<RingBandProfile, 6> photoBand_{};                       // per face, over its crops
   std::array<std::vector<std::size_t>, 6> cropsOfFace_{};            // indices into layout_.crops
   // Where every point of every crop lies in the tree under the start parameters (layout_.crops order),
   // shaded again for each candidate whose probe points lie in the same places (sameLocations).
