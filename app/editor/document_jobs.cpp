@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "io/image.hpp"
+#include "params/builtin_presets.hpp"
 #include "qt_image.hpp"
 #include "render/renderers.hpp"
 #include "util/error.hpp"
@@ -48,6 +49,13 @@ LoadedDocument loadDocumentFiles(const QString& path) {
     if (path.isEmpty()) throw InputError("no document given");
     if (!QFileInfo::exists(path)) throw InputError("no such file or folder: " + path.toStdString());
     auto project = std::make_shared<Project>(loadDocument(toPath(path)));
+    if (QFileInfo(path).isDir()) {
+      if (const Preset* species = builtInPresetForSampleName(QDir(path).dirName().toStdString())) {
+        project->params = species->applyTo(project->params);
+        document.speciesId = QString::fromStdString(species->id);
+        document.speciesName = QString::fromStdString(species->name);
+      }
+    }
     for (int i = 0; i < 6; ++i) {
       if (!project->facePhotos[i].empty()) document.photos[i] = toQImage(readImage(project->facePhotos[i]));
     }

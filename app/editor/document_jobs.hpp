@@ -27,6 +27,9 @@ struct LoadedDocument {
   std::shared_ptr<const WoodModel> model;  // built (and validated) while loading
   std::array<QImage, 6> photos;            // A..F; null where a face has no photo
   QString error;                           // set instead of the above on failure
+  // A sample folder named by a Mokume code (CN03) starts from that species' preset, as `kerf-cli fit`
+  // does: its id and name, empty when the name says no species (or for a project, which keeps its wood).
+  QString speciesId, speciesName;
 
   bool ok() const { return error.isEmpty(); }
   bool hasPhotos() const;

@@ -17,6 +17,7 @@
 #include "faces_view.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
+#include "parameter_panel.hpp"
 #include "qt_image.hpp"
 #include "recent_files.hpp"
 #include "render/renderers.hpp"
@@ -166,6 +167,11 @@ void MainWindow::documentLoaded(const LoadedDocument& loaded) {
                    loaded.name, loaded.photos);
   if (isProjectFile || QFileInfo(loaded.path).isDir()) recent_->add(loaded.path);
   logMessage("info", tr("Opened %1").arg(loaded.path));
+  parameterPanel_->setCurrentPreset(loaded.speciesId);
+  if (!loaded.speciesId.isEmpty())
+    logMessage(
+        "info",
+        tr("Species: %1, from the folder's name (the Preset box chooses another)").arg(loaded.speciesName));
   emit documentOpened(loaded.path);
   const FaceSet& heldOut = loaded.project->heldOutFaces;
   if (!heldOut.empty())

@@ -6,6 +6,7 @@
 // Also: the start page lists recent files; Reconstruct is refused without photos and, stopped at once,
 // changes nothing; the fit's quality in words.
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
@@ -27,6 +28,8 @@
 #include "job_runner.hpp"
 #include "log_panel.hpp"
 #include "main_window.hpp"
+#include "parameter_panel.hpp"
+#include "params/builtin_presets.hpp"
 #include "quick_texture_options.hpp"
 #include "start_page.hpp"
 #include "viewport3d.hpp"
@@ -139,6 +142,11 @@ void TestFirstHour::walkthroughFromPhotosToCut() {
   QVERIFY(window_->findChild<QDockWidget*>("cutDock")->isVisible());
   QVERIFY(window_->workPath()->reconstructAction()->isEnabled());
   QVERIFY(window_->workPath()->fitLabel()->text().isEmpty());
+  // The folder's Mokume code (CN03: kuri, chestnut) chooses the species the wood starts from, as in
+  // `kerf-cli fit`: without it the reconstruction showed the default wood's scattered dark pores.
+  QCOMPARE(window_->parameterPanel()->presetBox()->currentText().contains("kuri"), true);
+  QCOMPARE(window_->document()->project().params.poreCellSize,
+           builtInPreset("kuri")->parametersOnDefaults().poreCellSize);
   shoot(QStringLiteral("walkthrough_2_photos"));
 
   // 3-5. Reconstruct (Ctrl+R). Each stage is named in the status bar while it runs, and its result is on
