@@ -100,7 +100,7 @@ Command addTextureCommand(CLI::App& app) {
                                      "fitted growth field from its face photos (docs/texture.md)");
   struct Options {
     std::string project, out, photos, compare, parameters, appearance = "procedural";
-    const TextureInferenceOptions defaults;  // the core's defaults, stated once
+    const TextureInferenceOptions defaults{};  // the core's defaults, stated once
     unsigned seed = defaults.loss.seed;
     int crops = defaults.loss.cropsPerFace, cropSize = defaults.loss.cropSize,
         sweeps = defaults.search.maxSweeps, samples = defaults.loss.samples,
