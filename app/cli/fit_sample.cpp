@@ -163,11 +163,11 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
     if (!sources[faceIndex(face)].empty())
       std::printf("face %c: %d contours %s\n", faceLetter(face), fit.report.contoursPerFace[faceIndex(face)],
                   sources[faceIndex(face)].c_str());
-  for (const std::string& line : formatGrowthFieldFitReport(fit.report)) {
-    if (line.rfind("warning: ", 0) == 0)
-      std::fprintf(stderr, "kerf-cli: %s\n", line.c_str());
+  for (const ReportLine& line : formatGrowthFieldFitReport(fit.report)) {
+    if (line.severity == Severity::Warning)
+      std::fprintf(stderr, "kerf-cli: warning: %s\n", line.text.c_str());
     else
-      std::printf("%s\n", line.c_str());
+      std::printf("%s\n", line.text.c_str());
   }
   project.params = fit.params;
   project.knots = fit.knots;

@@ -110,8 +110,7 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
   out.params = fit.params;
   out.rates = *fit.rates;
   out.knots = fit.knots;
-  for (const std::string& line : formatGrowthFieldFitReport(fit.report))
-    out.report << QString::fromStdString(line);
+  out.report = formatGrowthFieldFitReport(fit.report);
   out.ambiguous = fit.report.pith.ambiguous;
   out.lossRings = fit.report.finalLossRings;
   for (const ContourResidual& c : fit.contours) {

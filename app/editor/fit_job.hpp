@@ -23,6 +23,7 @@
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
 #include "util/progress.hpp"
+#include "util/report_line.hpp"
 
 namespace kerf {
 
@@ -66,8 +67,8 @@ struct FittedContour {
 struct GrowthFitResult {
   WoodParameters params;  // the input parameters with growth.pith_*, ring_width, ring_offset replaced
   GrowthRates rates;
-  std::vector<BlockKnot> knots;  // fitted from the knot marks (Mokume Sec. 5.2.4)
-  QStringList report;            // lines for the log: contours, loss, O, V, ambiguity, timings
+  std::vector<BlockKnot> knots;    // fitted from the knot marks (Mokume Sec. 5.2.4)
+  std::vector<ReportLine> report;  // lines for the log: contours, loss, O, V, ambiguity, timings
   bool ambiguous = false;
   double lossRings = 0;  // final iso-contour loss of the saved field, in ring spacings
   std::vector<FittedContour> contours;

@@ -207,7 +207,8 @@ void MainWindow::fitGrowthField() {
 
 // A fit that has landed: applied as one undo step, its residuals drawn over the faces, its quality said.
 bool MainWindow::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
-  for (const QString& line : fit->report) logMessage(line.startsWith("warning") ? "warning" : "info", line);
+  for (const ReportLine& line : fit->report)
+    logMessage(severityName(line.severity), QString::fromStdString(line.text));
   try {
     document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"), fit->knots);
   } catch (const InputError& e) {

@@ -368,7 +368,8 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   return out;
 }
 
-std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& r) {
+std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r) {
+  std::vector<std::size_t> warningLines;  // indices into `lines`
   std::vector<std::string> lines;
   std::string perFace;
   for (FaceId face : kAllFaces) {
@@ -388,7 +389,10 @@ std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& 
                r.anatomy->confidence, r.anatomyUsed ? " (used as a prior)" : " (not used by the fit)"));
   else
     lines.push_back("anatomy: no face photos (X_col.png); the pith is fitted to the contours alone");
-  for (const std::string& w : r.pith.warnings) lines.push_back("warning: " + w);
+  for (const std::string& w : r.pith.warnings) {
+    warningLines.push_back(lines.size());
+    lines.push_back(w);
+  }
   lines.push_back(format("%d contours, %d points (%d used by the continuous fit), %d grid candidates",
                          r.pith.contours, r.pith.points, r.pith.fitPoints, r.pith.gridCandidates));
   addCandidate(lines, "pith", r.pith.best, r.rings.ringWidthMm);
@@ -481,7 +485,12 @@ std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& 
              "distortions %.3f s, ring placement %.3f s, colours %.3f s",
              r.extractSeconds, r.anatomySeconds, r.pith.gridSeconds, r.pith.refineSeconds, r.ringSeconds,
              r.distortionSeconds, r.placementSeconds, r.colourSeconds));
-  return lines;
+  std::vector<ReportLine> out;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const bool warning = std::find(warningLines.begin(), warningLines.end(), i) != warningLines.end();
+    out.push_back({warning ? Severity::Warning : Severity::Info, std::move(lines[i])});
+  }
+  return out;
 }
 
 }  // namespace kerf

@@ -22,6 +22,7 @@
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
 #include "util/progress.hpp"
+#include "util/report_line.hpp"
 
 namespace kerf {
 
@@ -131,8 +132,8 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
                                             const GrowthFieldFitOptions& options = {},
                                             const Progress& progress = {});
 
-// The report as log lines (contour counts, O, V, losses, anatomy, ambiguity, timings). Lines that are
-// warnings (from the pith fit) start with "warning: ".
-std::vector<std::string> formatGrowthFieldFitReport(const GrowthFieldFitReport& report);
+// The report as log lines (contour counts, O, V, losses, anatomy, ambiguity, timings); the pith fit's
+// warnings are lines of Severity::Warning.
+std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& report);
 
 }  // namespace kerf

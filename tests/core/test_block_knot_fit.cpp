@@ -194,7 +194,7 @@ TEST(BlockKnotFit, TheWholeFitRecoversTheKnotAndBeatsTheFitWithoutIt) {
   const auto lines = formatGrowthFieldFitReport(fit.report);
   const auto has = [&](const std::string& start) {
     return std::any_of(lines.begin(), lines.end(),
-                       [&](const std::string& l) { return l.rfind(start, 0) == 0; });
+                       [&](const ReportLine& l) { return l.text.rfind(start, 0) == 0; });
   };
   EXPECT_TRUE(has("knot 7 (marks on FA"));
   EXPECT_TRUE(has("  iso-contour error near knot 7"));

@@ -38,9 +38,9 @@ double angleDeg(glm::vec3 a, glm::vec3 b) {
          std::numbers::pi;
 }
 
-bool hasLine(const std::vector<std::string>& lines, const std::string& start) {
+bool hasLine(const std::vector<ReportLine>& lines, const std::string& start) {
   return std::any_of(lines.begin(), lines.end(),
-                     [&](const std::string& l) { return l.rfind(start, 0) == 0; });
+                     [&](const ReportLine& l) { return l.text.rfind(start, 0) == 0; });
 }
 
 }  // namespace
@@ -128,7 +128,8 @@ TEST(GrowthFieldFit, MokumeSampleCN03ReachesTheAuthorsError) {
     input.photos[faceIndex(f)] = readImage(folder / (letter + "_col.png"));
   }
   const GrowthFieldFitResult fit = fitGrowthFieldToSample(input, Block{}, WoodParameters{});
-  for (const std::string& line : formatGrowthFieldFitReport(fit.report)) std::printf("  %s\n", line.c_str());
+  for (const ReportLine& line : formatGrowthFieldFitReport(fit.report))
+    std::printf("  %s\n", line.text.c_str());
   // The authors' PyTorch fit reaches about 0.032 ring spacings on CN03 (MOKUME_CONVENTIONS.md C); Kerf
   // measured 0.026 with the anatomy prior.
   EXPECT_LT(fit.report.finalLossRings, 0.032);
@@ -145,4 +146,17 @@ TEST(GrowthFieldFit, MokumeSampleCN03ReachesTheAuthorsError) {
     EXPECT_NE(fit.report.alternativeNote.find("outside its allowed range"), std::string::npos)
         << fit.report.alternativeNote;
   }
+}
+
+// The pith fit's warnings reach the log as warnings by their stated severity (the CLI prints them to
+// stderr, the editor's log marks them), and no other line is one; the text carries no prefix to parse.
+TEST(GrowthFieldFit, ReportStatesWhichLinesAreWarnings) {
+  GrowthFieldFitReport report;
+  report.pith.warnings = {"only 3 contours on face B", "the pith lies far outside the block"};
+  const std::vector<ReportLine> lines = formatGrowthFieldFitReport(report);
+  std::vector<std::string> warnings;
+  for (const ReportLine& line : lines)
+    if (line.severity == Severity::Warning) warnings.push_back(line.text);
+  EXPECT_EQ(warnings, report.pith.warnings);
+  EXPECT_GT(lines.size(), warnings.size());
 }

@@ -98,8 +98,8 @@ TEST(HeldOutFaces, TheFitUsesNothingOfAHeldOutFace) {
   EXPECT_EQ(garbage.knots.size(), clean.knots.size());
   EXPECT_EQ(clean.report.contoursPerFace[faceIndex(FaceId::C)], -1);  // no ring image read for C
   EXPECT_EQ(clean.params.faceTintC, WoodParameters{}.faceTintC);      // neutral: a prediction
-  const std::vector<std::string> lines = formatGrowthFieldFitReport(garbage.report);
-  EXPECT_EQ(lines.front().rfind("held out (leave-one-face-out): face C;", 0), 0u) << lines.front();
+  const std::vector<ReportLine> lines = formatGrowthFieldFitReport(garbage.report);
+  EXPECT_EQ(lines.front().text.rfind("held out (leave-one-face-out): face C;", 0), 0u) << lines.front().text;
 
   // The same garbage not held out changes the fit: the comparison above would catch a leak.
   GrowthFieldFitInput used = heldGarbage;

@@ -140,7 +140,8 @@ TEST(NumberedTraces, PinTheRingsToTheirYears) {
   // And Kerf's whole-year rings are the numbered ones: the fractional part of year - a is the offset.
   const double phase = -*fit.report.ageOffset - std::floor(-*fit.report.ageOffset);
   EXPECT_NEAR(phase, fit.params.ringOffset, 1e-5);
-  for (const std::string& line : formatGrowthFieldFitReport(fit.report)) std::printf("  %s\n", line.c_str());
+  for (const ReportLine& line : formatGrowthFieldFitReport(fit.report))
+    std::printf("  %s\n", line.text.c_str());
 }
 
 TEST(NumberedTraces, FitBeatsTheRbfBaselineOnAHiddenCut) {
