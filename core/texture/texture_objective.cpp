@@ -79,7 +79,7 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
     if (options.ringPhaseBins > 0)
       cropLabels_.push_back(
           ringPhaseLabels(model, crop, layout_.imageSize[faceIndex(crop.face)], options.ringPhaseBins));
-    if (options.bandBins > 0) {
+    if (options.bandWeight > 0 && options.bandBins > 0) {  // only the search uses the crops' profiles
       bandLabels_.push_back(
           ringPhaseLabels(model, crop, layout_.imageSize[faceIndex(crop.face)], options.bandBins));
       photoBand_[faceIndex(crop.face)].add(ringBandProfile(
