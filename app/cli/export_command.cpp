@@ -13,9 +13,9 @@ namespace kerf::cli {
 
 Command addExportCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
-      "export",
-      "Export a face or cut image (.png/.tif/.exr), a volume (.nrrd/.vdb), a depth stack (folder) or a "
-      "textured part (.obj/.glb with --mesh)");
+      "export", "Export a face or cut image (" + extensionWords(ExportKind::Image) + "), a volume (" +
+                    extensionWords(ExportKind::Volume) + "), a depth stack (folder) or a textured part (" +
+                    extensionWords(ExportKind::Part) + " with --mesh)");
   struct Options {
     std::string document, out, face, plane, layer = "colour", exrType = "half", quantity = "growth",
                                             depthStack, mesh, place, rotate;
@@ -27,8 +27,9 @@ Command addExportCommand(CLI::App& app) {
   command->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   command
       ->add_option("--out", o->out,
-                   "Output: .png .tif .tiff .exr (image), .nrrd .vdb (volume), a folder (--depth-stack), "
-                   ".obj .glb (part, --mesh)")
+                   "Output: " + extensionWords(ExportKind::Image) + " (image), " +
+                       extensionWords(ExportKind::Volume) + " (volume), a folder (--depth-stack), " +
+                       extensionWords(ExportKind::Part) + " (part, --mesh)")
       ->required();
   command->add_option("--face", o->face, "Image of face A..F");
   command->add_option("--plane", o->plane,

@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "export/export_formats.hpp"
 #include "export/volume_export.hpp"
 #include "io/project.hpp"
 #include "number_option.hpp"
@@ -20,7 +21,7 @@ Command addExportVolumeCommand(CLI::App& app) {
   volume->add_option("--quantity", o->quantity, "growth (float years) or color (uint8 RGB)")
       ->check(CLI::IsMember({"growth", "color"}));
   cli::addNumber(volume, "--res", o->resolution, "Samples along the block's longest side", 1, 4096);
-  volume->add_option("--out", o->out, "Output .nrrd or .vdb file")->required();
+  volume->add_option("--out", o->out, "Output " + extensionList(ExportKind::Volume) + " file")->required();
   return {volume, [o](Context& context) {
             const Project project = loadDocument(o->document);
             const WoodModel model(project);

@@ -13,11 +13,11 @@
 #include <QLayout>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSignalBlocker>
 #include <QSpinBox>
 #include <algorithm>
 #include <cmath>
 
+#include "export_format_box.hpp"
 #include "util/error.hpp"
 #include "util/size_limits.hpp"
 
@@ -98,9 +98,7 @@ ExportDialog::ExportDialog(Kind kind, const Block& block, std::optional<CutPlane
 
 void ExportDialog::addImageRows(QFormLayout* form) {
   format_ = new QComboBox;
-  format_->addItem(tr("PNG (8-bit, one layer)"), ".png");
-  format_->addItem(tr("TIFF (16-bit colour; growth and rings pages)"), ".tif");
-  format_->addItem(tr("OpenEXR (linear colour; growth and rings channels)"), ".exr");
+  addExportFormats(format_, ExportKind::Image);
   format_->setToolTip(
       tr("PNG for CAM software and viewers; TIFF for 16-bit colour and a float growth page; "
          "OpenEXR for compositing and float data. Every file stores its scale (DPI)."));
@@ -155,8 +153,7 @@ void ExportDialog::addImageRows(QFormLayout* form) {
 
 void ExportDialog::addVolumeRows(QFormLayout* form) {
   format_ = new QComboBox;
-  format_->addItem(tr("NRRD (3D Slicer, ParaView, Fiji; streamed)"), ".nrrd");
-  format_->addItem(tr("OpenVDB (Blender, Houdini, ParaView)"), ".vdb");
+  addExportFormats(format_, ExportKind::Volume);
   format_->setToolTip(
       tr("NRRD is written slice by slice with little memory; OpenVDB keeps the whole grid in "
          "memory until it is written (about 4 bytes per voxel for growth, 12 for colour)"));
@@ -268,8 +265,7 @@ void ExportDialog::browse() {
   if (kind_ == Kind::DepthStack) {
     chosen = QFileDialog::getExistingDirectory(this, titleOf(kind_), QFileInfo(path()).absolutePath());
   } else {
-    chosen = QFileDialog::getSaveFileName(this, titleOf(kind_), path(),
-                                          tr("Files (*%1)").arg(format_->currentData().toString()));
+    chosen = QFileDialog::getSaveFileName(this, titleOf(kind_), path(), selectedFormatFilter(format_));
   }
   if (!chosen.isEmpty()) setPath(chosen);
 }
@@ -284,11 +280,7 @@ void ExportDialog::formatChanged() {
 void ExportDialog::pathChanged() {
   if (!format_) return;
   // A typed (or set) extension picks the format, so the two never disagree.
-  const int index = format_->findData("." + QFileInfo(path()).suffix().toLower());
-  if (index >= 0 && index != format_->currentIndex()) {
-    const QSignalBlocker block(format_);
-    format_->setCurrentIndex(index);
-  }
+  selectExportFormatOf(format_, path());
   updateLayerControls();
 }
 

@@ -16,9 +16,9 @@
 #include <QSpinBox>
 #include <initializer_list>
 
+#include "export_format_box.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "util/error.hpp"
-#include "util/file_extension.hpp"
 
 namespace kerf {
 namespace {
@@ -90,8 +90,7 @@ PartExportDialog::PartExportDialog(const Block& block, const QString& folder, QW
   form->addRow(tr("Texture:"), resolution_);
 
   format_ = new QComboBox;
-  format_->addItem(tr("OBJ + MTL + PNG"), ".obj");
-  format_->addItem(tr("glTF binary (.glb, texture embedded)"), ".glb");
+  addExportFormats(format_, ExportKind::Part);
   format_->setToolTip(tr("OBJ for CAM and most 3D programs; GLB for viewers, the web and Blender (metres)"));
   form->addRow(tr("Format:"), format_);
   path_ = new QLineEdit(QDir(folder).filePath("part.obj"));
@@ -102,13 +101,7 @@ PartExportDialog::PartExportDialog(const Block& block, const QString& folder, QW
   form->addRow(tr("File:"), outRow);
   connect(outBrowse, &QPushButton::clicked, this, &PartExportDialog::browseOut);
   connect(format_, &QComboBox::currentIndexChanged, this, &PartExportDialog::formatChanged);
-  connect(path_, &QLineEdit::textChanged, this, [this] {
-    const int index = format_->findData(QString::fromStdString(lowerExtension(path_->text().toStdString())));
-    if (index >= 0) {
-      const QSignalBlocker block(format_);
-      format_->setCurrentIndex(index);
-    }
-  });
+  connect(path_, &QLineEdit::textChanged, this, [this] { selectExportFormatOf(format_, path_->text()); });
 
   fit_ = new QLabel;
   fit_->setWordWrap(true);
@@ -214,7 +207,8 @@ void PartExportDialog::accept() {
     if (!mesh_)
       throw InputError(meshProblem_.isEmpty() ? "choose a mesh (OBJ, STL or PLY)"
                                               : meshProblem_.toStdString());
-    if (exportKindOf(request()) != ExportKind::Part) throw InputError("a part is written as .obj or .glb");
+    if (exportKindOf(request()) != ExportKind::Part)
+      throw InputError("a part is written as " + extensionList(ExportKind::Part));
   } catch (const InputError& e) {
     problem_->setText(QString::fromUtf8(e.what()));
     problem_->show();
@@ -231,7 +225,7 @@ void PartExportDialog::browseMesh() {
 
 void PartExportDialog::browseOut() {
   const QString chosen =
-      QFileDialog::getSaveFileName(this, tr("Export Part"), path(), tr("OBJ (*.obj);;glTF binary (*.glb)"));
+      QFileDialog::getSaveFileName(this, tr("Export Part"), path(), exportFormatFilters(ExportKind::Part));
   if (!chosen.isEmpty()) setPath(chosen);
 }
 

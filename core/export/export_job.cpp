@@ -8,16 +8,6 @@
 namespace kerf {
 namespace {
 
-bool isImageExtension(const std::string& e) {
-  return e == ".png" || e == ".tif" || e == ".tiff" || e == ".exr";
-}
-bool isVolumeExtension(const std::string& e) {
-  return e == ".nrrd" || e == ".vdb";
-}
-bool isPartExtension(const std::string& e) {
-  return e == ".obj" || e == ".glb";
-}
-
 std::string sizeText(int width, int height, float pxPerMm) {
   std::ostringstream s;
   s.precision(4);
@@ -53,25 +43,26 @@ ExportSummary runPartExport(const WoodModel& model, const ExportRequest& request
 }  // namespace
 
 ExportKind exportKindOf(const ExportRequest& request) {
-  const std::string e = lowerExtension(request.out);
   if (request.out.empty()) throw InputError("no output path given");
+  const std::optional<ExportFormatInfo> format = exportFormatOf(request.out);
   if (request.depthStack) {
-    if (isImageExtension(e) || isVolumeExtension(e) || isPartExtension(e))
-      throw InputError("a depth stack is written into a folder, not a " + e +
+    if (format)
+      throw InputError("a depth stack is written into a folder, not a " + lowerExtension(request.out) +
                        " file: " + request.out.string());
     return ExportKind::DepthStack;
   }
-  if (isImageExtension(e)) {
+  if (!format)
+    throw InputError("cannot tell what to export from \"" + request.out.string() + "\": use " +
+                     extensionList(ExportKind::Image) + " for an image, " +
+                     extensionList(ExportKind::Volume) + " for a volume, " + extensionList(ExportKind::Part) +
+                     " for a textured part (with --mesh), or a folder with --depth-stack");
+  if (format->kind == ExportKind::Image) {
     if (request.face.has_value() == request.plane.has_value())
       throw InputError("an image export needs either a face (--face A..F) or a cut plane (--plane), not " +
                        std::string(request.face ? "both" : "neither"));
     return ExportKind::Image;
   }
-  if (isVolumeExtension(e)) return ExportKind::Volume;
-  if (isPartExtension(e)) return ExportKind::Part;
-  throw InputError("cannot tell what to export from \"" + request.out.string() +
-                   "\": use .png, .tif, .tiff or .exr for an image, .nrrd or .vdb for a volume, "
-                   ".obj or .glb for a textured part (with --mesh), or a folder with --depth-stack");
+  return format->kind;
 }
 
 ExportSummary runExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {

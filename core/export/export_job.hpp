@@ -1,23 +1,22 @@
 #pragma once
 // One export, as `kerf-cli export` and the editor's File > Export dialogs describe it: what to write is
-// picked from the output path's extension (docs/export.md):
-//   .png .tif .tiff .exr   a face (face) or a cut (plane) image with layers (export/image_export.hpp)
-//   .nrrd .vdb             a volume of the growth field or the colour (export/volume_export.hpp)
+// picked from the output path's extension (the formats: export/export_formats.hpp; docs/export.md):
+//   an image format        a face (face) or a cut (plane) image with layers (export/image_export.hpp)
+//   a volume format        a volume of the growth field or the colour (export/volume_export.hpp)
 //   a folder               a depth stack (depthStack set; export/depth_stack.hpp)
-//   .obj .glb              a textured part: a placed mesh baked with the wood (export/part_export.hpp)
+//   a part format          a textured part: a placed mesh baked with the wood (export/part_export.hpp)
 #include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
 
 #include "export/depth_stack.hpp"
+#include "export/export_formats.hpp"
 #include "export/image_export.hpp"
 #include "export/part_export.hpp"
 #include "export/volume_export.hpp"
 
 namespace kerf {
-
-enum class ExportKind { Image, Volume, DepthStack, Part };
 
 struct ExportRequest {
   std::filesystem::path out;

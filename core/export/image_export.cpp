@@ -7,10 +7,10 @@
 #include <limits>
 #include <sstream>
 
+#include "export/export_formats.hpp"
 #include "io/atomic_file.hpp"
 #include "render/renderers.hpp"
 #include "util/error.hpp"
-#include "util/file_extension.hpp"
 #include "util/parallel.hpp"
 #include "util/size_limits.hpp"
 
@@ -265,14 +265,11 @@ LayeredImage renderCutLayers(const WoodModel& model, const CutPlane& plane, floa
 void writeLayeredImage(const std::filesystem::path& path, const LayeredImage& image,
                        const ImageWriteOptions& options) {
   if (image.colour.empty()) throw InputError("refusing to write an empty image to " + path.string());
-  const std::string extension = lowerExtension(path);
-  if (extension != ".png" && extension != ".tif" && extension != ".tiff" && extension != ".exr") {
-    throw InputError("cannot write an image as \"" + extension + "\" (use .png, .tif, .tiff or .exr)");
-  }
+  const ExportFormat format = requireExportFormat(path, ExportKind::Image, "an image").format;
   writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-    if (extension == ".png") {
+    if (format == ExportFormat::Png) {
       writePng(path, temporary, image, options.pngLayer);
-    } else if (extension == ".exr") {
+    } else if (format == ExportFormat::Exr) {
       writeExr(path, temporary, image, options);
     } else {
       writeTiff(path, temporary, image, options.extraLayers);

@@ -1,22 +1,21 @@
 #include "export/part_export.hpp"
 
+#include "export/export_formats.hpp"
 #include "export/part_writers.hpp"
 #include "mesh/bake_part_texture.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "mesh/uv_atlas.hpp"
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
-#include "util/file_extension.hpp"
 
 namespace kerf {
 
 PartExportResult exportPart(const WoodModel& model, const PartExportOptions& options,
                             const std::filesystem::path& out, const Progress& progress) {
-  const std::string format = lowerExtension(out);
-  if (format != ".obj" && format != ".glb")
-    throw InputError("a textured part is written as .obj or .glb, not \"" + format + "\"");
+  const ExportFormatInfo format = requireExportFormat(out, ExportKind::Part, "a textured part");
   if (options.mesh.empty())
-    throw InputError("a part export (" + format + ") needs a mesh: --mesh FILE (.obj, .stl or .ply)");
+    throw InputError("a part export (" + std::string(format.extensions[0]) +
+                     ") needs a mesh: --mesh FILE (.obj, .stl or .ply)");
   if (options.textureResolution < 16 || options.textureResolution > 16384)
     throw InputError("the texture resolution must be between 16 and 16384 texels, not " +
                      std::to_string(options.textureResolution));
@@ -39,7 +38,7 @@ PartExportResult exportPart(const WoodModel& model, const PartExportOptions& opt
   const UvAtlas atlas = buildUvAtlas(placed, atlasOptions);
   progress.set(0.05);
   const BakedTexture baked = bakePartTexture(model, atlas, options.samples, progress.part(0.05, 0.9));
-  if (format == ".obj") {
+  if (format.format == ExportFormat::Obj) {
     result.files = writePartObj(out, atlas.mesh, baked.image);
   } else {
     writePartGlb(out, atlas.mesh, baked.image);

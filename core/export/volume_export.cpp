@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
+#include "export/export_formats.hpp"
 #include "export/volume_writer.hpp"
 #include "util/error.hpp"
-#include "util/file_extension.hpp"
 #include "util/parallel.hpp"
 #include "util/size_limits.hpp"
 
@@ -27,7 +27,8 @@ namespace {
 void checkVolumeFits(const std::filesystem::path& path, glm::ivec3 n, int bytesPerSample) {
   const std::uint64_t samples = std::uint64_t(n.x) * std::uint64_t(n.y) * std::uint64_t(n.z);
   const std::string size = std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z);
-  if (lowerExtension(path) == ".vdb") {
+  const std::optional<ExportFormatInfo> format = exportFormatOf(path);
+  if (format && format->format == ExportFormat::Vdb) {
     // OpenVDB's dense leaves: a float (growth) or 3 floats (colour) per voxel, plus about 6 % for the tree.
     const std::uint64_t perSample = bytesPerSample == 4 ? 4 : 12;
     checkMemoryNeed(samples * perSample / 16 * 17, "the " + size + " VDB volume");

@@ -2,9 +2,8 @@
 
 #include <string>
 
+#include "export/export_formats.hpp"
 #include "export/vdb_writer.hpp"
-#include "util/error.hpp"
-#include "util/file_extension.hpp"
 
 namespace kerf {
 namespace {
@@ -23,10 +22,9 @@ class NrrdVolumeWriter : public VolumeWriter {
 }  // namespace
 
 std::unique_ptr<VolumeWriter> openVolumeWriter(const std::filesystem::path& path, const NrrdLayout& layout) {
-  const std::string extension = lowerExtension(path);
-  if (extension == ".nrrd") return std::make_unique<NrrdVolumeWriter>(path, layout);
-  if (extension == ".vdb") return std::make_unique<VdbWriter>(path, layout);
-  throw InputError("cannot write a volume as \"" + extension + "\" (use .nrrd or .vdb)");
+  if (requireExportFormat(path, ExportKind::Volume, "a volume").format == ExportFormat::Vdb)
+    return std::make_unique<VdbWriter>(path, layout);
+  return std::make_unique<NrrdVolumeWriter>(path, layout);
 }
 
 }  // namespace kerf
