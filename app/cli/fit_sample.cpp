@@ -33,6 +33,14 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
   cli::addNumber(command, "--anatomy-weight", o.anatomyWeight,
                  "Strength of the anatomical prior on the pith direction (default 1; 0 = report only)", 0.0,
                  100.0);
+  cli::addNumber(
+      command, "--max-pith-distance", o.maxPithDistance,
+      "mm: a pith farther from the block centre is pulled back (default 500, a 1 m log; 0 = no "
+      "limit); the rings of a small block barely curve, so the pith may otherwise drift metres away",
+      0.0, 10000.0);
+  command->add_flag("--ignore-pores", o.ignorePores,
+                    "Ring-porous species: do not let the pores choose the pith's side when the ring "
+                    "contours cannot (they are still reported)");
   command->add_option(
       "--species", o.species,
       "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri "
@@ -152,6 +160,8 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   options.pithOnly = o.pithOnly;
   options.useAnatomy = !o.ignoreAnatomy;
   options.anatomyWeight = o.anatomyWeight;
+  options.plausiblePithDistanceMm = o.maxPithDistance;
+  options.pithSideByPores = !o.ignorePores;
   const GrowthFieldFitResult fit = [&] {
     try {
       return fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());

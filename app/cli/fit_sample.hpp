@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "fit/growth_field_fit.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 
@@ -21,6 +22,8 @@ struct FitSampleOptions {
   bool ignoreAnatomy = false;
   bool ignoreTraces = false;
   double anatomyWeight = 1.0;
+  double maxPithDistance = GrowthFieldFitOptions{}.plausiblePithDistanceMm;
+  bool ignorePores = false;  // !GrowthFieldFitOptions::pithSideByPores
   std::string species;
   std::vector<std::string> holdOut;
 };

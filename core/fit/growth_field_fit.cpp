@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <map>
+#include <memory>
 
 #include "field/growth_field.hpp"
 #include "fit/colour_fit.hpp"
@@ -14,6 +15,7 @@
 #include "fit/held_out_faces.hpp"
 #include "fit/iso_contour_loss.hpp"
 #include "fit/iso_contours.hpp"
+#include "fit/pore_band_side.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 #include "util/resource_usage.hpp"
@@ -218,12 +220,11 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     pithOptions.anatomyWeight = options.anatomyWeight;
     report.anatomyUsed = true;
   }
+  pithOptions.plausibleDistanceMm = options.plausiblePithDistanceMm;
   report.pith = fitPith(contours, block, pithOptions, progress.part(0.0, options.pithOnly ? 0.95 : 0.45));
-  const PithCandidate& best = report.pith.best;
-  if (report.anatomy) report.anatomyAngleDeg = anatomyAngleDeg(*report.anatomy, best.axis.direction);
-
   const bool anyImage =
       std::any_of(input.rings.begin(), input.rings.end(), [](const GrayImage8& i) { return !i.empty(); });
+
   // Everything after the pith for one pith candidate: ring width and phase along it, then the rates.
   auto fieldAround = [&](const PithCandidate& candidate, GrowthFieldFitReport& r, const Progress& sub,
                          bool preview) {
@@ -296,27 +297,62 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   };
   const bool alternative = report.pith.ambiguous && report.pith.flipped && options.fitAlternative;
   const double end = alternative ? 0.75 : 0.95;
-  const GrowthFieldFitAlternative chosen =
-      fieldAround(report.pith.best, report, progress.part(0.45, end), true);
-  out.params = chosen.params;
-  out.rates = chosen.rates;
+  // On the heap, so that the pores can swap the two without copying (GCC 12 also misreads such copies of
+  // the rates' std::optional as uninitialised).
+  auto chosen = std::make_unique<GrowthFieldFitAlternative>(
+      fieldAround(report.pith.best, report, progress.part(0.45, end), true));
+  std::unique_ptr<GrowthFieldFitAlternative> mirrored;
+  GrowthFieldFitReport other = report;
   if (alternative) {
     // Mokume B.1: the mirrored pith explains the rings almost as well; fit it too so the user can pick.
-    GrowthFieldFitReport other = report;
     try {
-      out.alternative = fieldAround(*report.pith.flipped, other, progress.part(end, 0.95), false);
-      report.alternativeLossRings = out.alternative->finalLossRings;
+      mirrored = std::make_unique<GrowthFieldFitAlternative>(
+          fieldAround(*report.pith.flipped, other, progress.part(end, 0.95), false));
     } catch (const InputError& e) {
       report.alternativeNote = std::string("the other candidate cannot be used as a field: ") + e.what();
     }
   }
+  const bool photos =
+      std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); });
+  // Ring-porous wood: the pores open each ring on the pith's side (fit/pore_band_side.hpp). Where the
+  // contours cannot tell the mirrored pith from this one, the pores choose.
+  if (photos && chosen->rates && isRingPorous(current)) {
+    const auto placement = [&](const GrowthFieldFitAlternative& field) {
+      return poreBandPlacement(GrowthField(field.params, *field.rates), field.params.ringOffset, block,
+                               input.photos)
+          .earlyMinusLate;
+    };
+    const double chosenBands = placement(*chosen);
+    const std::optional<double> mirroredBands =
+        mirrored && mirrored->rates ? std::optional(placement(*mirrored)) : std::nullopt;
+    if (options.pithSideByPores && mirroredBands &&
+        chosenBands<-kPoreBandSideMargin&& * mirroredBands> kPoreBandSideMargin) {
+      std::swap(chosen, mirrored);
+      report = std::move(other);  // the per-candidate stages' report of the mirrored pith
+      std::swap(report.pith.best, *report.pith.flipped);
+      report.pithSideByPores = true;
+      report.poreBandsChosen = mirroredBands;
+      report.poreBandsMirrored = chosenBands;
+    } else {
+      report.poreBandsChosen = chosenBands;
+      report.poreBandsMirrored = mirroredBands;
+    }
+  }
+  if (mirrored) {
+    report.alternativeLossRings = mirrored->finalLossRings;
+    out.alternative = std::move(*mirrored);
+  }
+  if (report.anatomy)
+    report.anatomyAngleDeg = anatomyAngleDeg(*report.anatomy, report.pith.best.axis.direction);
+  out.params = chosen->params;
+  out.rates = chosen->rates;
   // Knots (Mokume Sec. 5.2.4, Eq. 7): merged into the fitted field from the user's knot marks.
   if (options.fitKnots && !input.knotMarks.empty() && out.rates) {
     const GrowthField stem(out.params, *out.rates);
     KnotSettings settings = KnotSettings::fromParameters(out.params);
     BlockKnotFitOptions knotOptions;
-    knotOptions.start = chosen.knots;  // from the undeformed field
-    if (!chosen.knots.empty()) settings.knotSmoothStem = chosen.knotSmoothStem;
+    knotOptions.start = chosen->knots;  // from the undeformed field
+    if (!chosen->knots.empty()) settings.knotSmoothStem = chosen->knotSmoothStem;
     const BlockKnotFitResult knots = fitBlockKnots(contours, block, stem, input.knotMarks, settings,
                                                    knotOptions, progress.part(0.95, 0.97));
     out.knots = knots.knots;
@@ -328,8 +364,6 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     report.knotSeconds = knots.seconds;
   }
   // Step 3: the colours of the wood and of each face, given the field (Mokume A.2.3).
-  const bool photos =
-      std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); });
   if (options.fitColours && photos && out.rates) {
     const ColourFitResult colours =
         fitColours(block, out.params, *out.rates, input.photos, {}, progress.part(0.97, 0.99));
@@ -406,6 +440,29 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
   lines.push_back(format("rings: width %.4f mm, phase %.4f (%zu rings found, median spacing %.4f mm)",
                          r.rings.ringWidthMm, r.rings.ringOffset, r.rings.peaksMm.size(),
                          r.rings.medianSpacingMm));
+  if (r.poreBandsChosen) {
+    const double chosen = *r.poreBandsChosen;
+    const bool early = chosen > kPoreBandSideMargin, late = chosen < -kPoreBandSideMargin;
+    std::string line = format(
+        "pore bands (ring-porous wood opens each ring with its large pores): %s under "
+        "this pith (early minus late %+.2f)",
+        early  ? "at the start of the rings"
+        : late ? "at the END of the rings"
+               : "not clear",
+        chosen);
+    if (!r.pithSideByPores && r.poreBandsMirrored)
+      line += format(", under the mirrored pith %+.2f", *r.poreBandsMirrored);
+    if (r.pithSideByPores && r.poreBandsMirrored)
+      line += format(
+          "; the mirrored pith, which the contours alone preferred, puts them at the end (%+.2f), so "
+          "this side was chosen",
+          *r.poreBandsMirrored);
+    if (late && !r.pithSideByPores) {
+      warningLines.push_back(lines.size());
+      line += ": the pores put the pith on the other side of the block; check the ring contours";
+    }
+    lines.push_back(line);
+  }
   if (r.pith.flipped) {
     lines.push_back(format("ambiguity (Mokume B.1): %s",
                            r.pith.ambiguous

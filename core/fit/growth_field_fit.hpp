@@ -52,6 +52,11 @@ struct GrowthFieldFitOptions {
   int minFaces = 0;
   // When the pith side is ambiguous (Mokume B.1), also fit the field around the mirrored candidate.
   bool fitAlternative = true;
+  // A pith farther from the block centre is pulled back (fit/pith_fit.hpp; 0: no limit). 500 mm: the
+  // radius of a 1 m log; Mokume's 100 cubes lie 15-330 mm from their piths (Fig. 7).
+  double plausiblePithDistanceMm = 500;
+  // Ring-porous wood with photos: when the side is ambiguous, the pores choose it (fit/pore_band_side.hpp).
+  bool pithSideByPores = true;
   // Step 3, colour initialisation (fit/colour_fit.hpp), when there are face photos.
   bool fitColours = true;
   // Knots from input.knotMarks (not with pithOnly).
@@ -75,10 +80,14 @@ struct GrowthFieldFitReport {
   double imageLossBefore = 0, imageLossAfter = 0;  // Eq. 5, mean |M(G) - ARL| (0: no image term)
   int tracesUsed = 0, numberedTraces = 0;          // the user's traces among the contours
   std::optional<double> ageOffset;                 // numbered traces: ring y at G = y - ageOffset
-  std::optional<double> alternativeLossRings;      // the other candidate's field, when fitted
-  std::string alternativeNote;                     // why it was not, when it could not be
-  bool ringsFromGrayMap = false;                   // ring levels from M's peaks (Eq. 6)
-  int ringsAlongFitted = 0;                        // rings found along the fitted field
+  // The photos' pores by ring phase (fit/pore_band_side.hpp; ring-porous wood only): early minus late
+  // under the chosen pith and under the mirrored one; whether they chose the side against the contours.
+  std::optional<double> poreBandsChosen, poreBandsMirrored;
+  bool pithSideByPores = false;
+  std::optional<double> alternativeLossRings;  // the other candidate's field, when fitted
+  std::string alternativeNote;                 // why it was not, when it could not be
+  bool ringsFromGrayMap = false;               // ring levels from M's peaks (Eq. 6)
+  int ringsAlongFitted = 0;                    // rings found along the fitted field
   double finalLossRings = 0;  // the returned field (pith only: the undeformed one), ring spacings
   float ringWidthMm = 0;      // growth.ring_width of the result
   double anatomySeconds = 0;

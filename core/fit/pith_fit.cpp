@@ -210,6 +210,19 @@ struct PriorResidual {
   }
 };
 
+// Zero while the axis crosses the frame's plane within dMax of the block centre, then sqrt(k) * (d - dMax)
+// / dMax: half its square is k/2 per dMax of excess squared, k as for the anatomical prior.
+struct DistancePriorResidual {
+  double sqrtK, dMax;
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    using std::sqrt;
+    const T d = sqrt(x[0] * x[0] + x[1] * x[1] + T(1e-12));
+    r[0] = d > T(dMax) ? sqrtK * (d - T(dMax)) / T(dMax) : T(0.0);
+    return true;
+  }
+};
+
 struct Refined {
   std::array<double, 4> x;
   double cost;
@@ -230,16 +243,23 @@ Refined refineParams(const Samples& s, int levels, std::array<double, 4> x, cons
   ceres::Problem problem(po);
   auto* contourCost = new ContourCost(s, levels, options.robustScaleMm);
   problem.AddResidualBlock(contourCost, nullptr, x.data(), level.data());
-  if (prior.weight > 0) {
-    // k = 2 * weight * (contour cost at the start): the prior adds weight * sin^2 of the start's cost.
+  if (prior.weight > 0 || options.plausibleDistanceMm > 0) {
+    // The priors are scaled by the contour cost at the start, so their pull does not depend on how many
+    // points there are: the anatomical one adds weight * sin^2 of that cost.
     std::vector<double> res(s.p.size());
     const double* params[2] = {x.data(), level.data()};
     contourCost->Evaluate(params, res.data(), nullptr);
     double cost0 = 0;
     for (double r : res) cost0 += 0.5 * r * r;
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorResidual, 3, 4>(
-                                 new PriorResidual{std::sqrt(2.0 * prior.weight * cost0), prior.fibre}),
-                             nullptr, x.data());
+    if (prior.weight > 0)
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorResidual, 3, 4>(
+                                   new PriorResidual{std::sqrt(2.0 * prior.weight * cost0), prior.fibre}),
+                               nullptr, x.data());
+    if (options.plausibleDistanceMm > 0)
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<DistancePriorResidual, 1, 4>(
+              new DistancePriorResidual{std::sqrt(2.0 * cost0), options.plausibleDistanceMm}),
+          nullptr, x.data());
   }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;  // robust where the normal equations are ill-conditioned

@@ -55,6 +55,10 @@ struct PithFitOptions {
   double ambiguityRatio = 1.15;            // flipped candidate within this factor of the best loss: ambiguous
   std::optional<AnatomyEstimate> anatomy;  // fibre direction from the photos (none: contours only)
   double anatomyWeight = 1.0;              // strength of the anatomical prior (0: report only)
+  // A plausible tree (issue 18 item 3): a pith farther than this from the block centre is pulled back by
+  // a prior that grows linearly beyond it (0: none). A 40 mm block's rings barely curve, so without it
+  // the refinement slides along the loss's flat valley to piths metres away (CN03: 1.37 m, 330 rings).
+  double plausibleDistanceMm = 0;
 };
 
 struct PithCandidate {

@@ -15,12 +15,12 @@
 #include <vector>
 
 #include "field/growth_rates.hpp"
+#include "fit/ring_band_profile.hpp"
 #include "geometry/block.hpp"
 #include "io/image.hpp"
 #include "params/parameter_schema.hpp"
 #include "texture/face_crops.hpp"
 #include "texture/grain_view.hpp"
-#include "texture/ring_band_profile.hpp"
 #include "texture/texture_statistics.hpp"
 #include "util/progress.hpp"
 
@@ -44,7 +44,7 @@ struct TextureLossOptions {
   double figureWeight = 1.0;  // of (1 - figure correlation): the ring figure stays where the field put it
   double streakWeight =
       1.0;  // of the streak-length difference (grain_view.hpp): pores as long as the photo's
-  // Of the ring-band difference (texture/ring_band_profile.hpp): the dark detail (pores) in the same part
+  // Of the ring-band difference (fit/ring_band_profile.hpp): the dark detail (pores) in the same part
   // of the ring as the photo's, e.g. a band of several rows at the start of the earlywood. Off in the
   // search (0; the report always shows it): on CN03 a weight of 1 made the band no wider. The model ties
   // the earlywood pores' band to the earlywood colour's (1 - rings.latewood_fraction), and the search

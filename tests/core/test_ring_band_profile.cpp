@@ -1,4 +1,4 @@
-// Where in the ring the dark detail sits (core/texture/ring_band_profile.hpp): synthetic end grain with
+// Where in the ring the dark detail sits (core/fit/ring_band_profile.hpp): synthetic end grain with
 // rings 32 px apart (5 mm at 6.4 px/mm), dark pores of 2 px scattered in a chosen part of every ring.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "texture/ring_band_profile.hpp"
+#include "fit/ring_band_profile.hpp"
 
 using namespace kerf;
 

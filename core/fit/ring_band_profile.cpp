@@ -1,4 +1,4 @@
-#include "texture/ring_band_profile.hpp"
+#include "fit/ring_band_profile.hpp"
 
 #include <algorithm>
 #include <cmath>
