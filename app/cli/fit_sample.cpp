@@ -7,7 +7,7 @@
 #include "fit/growth_field_fit.hpp"
 #include "fit/held_out_faces.hpp"
 #include "hold_out_option.hpp"
-#include "io/gray_image.hpp"
+#include "image/gray_image.hpp"
 #include "io/sample_folder.hpp"
 #include "number_option.hpp"
 #include "params/builtin_presets.hpp"

@@ -13,7 +13,7 @@
 
 #include "field/knot_field.hpp"
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {

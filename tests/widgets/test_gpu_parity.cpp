@@ -17,6 +17,7 @@
 #include "gl/gpu_image_renderer.hpp"
 #include "gl/wood_program.hpp"
 #include "gl_renderer_fixture.hpp"
+#include "image/image_difference.hpp"
 #include "render/renderers.hpp"
 
 using namespace kerf;

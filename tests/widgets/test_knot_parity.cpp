@@ -11,6 +11,7 @@
 #include "../core/spruce_log.hpp"
 #include "gl/gpu_board_renderer.hpp"
 #include "gl_renderer_fixture.hpp"
+#include "image/image_difference.hpp"
 #include "io/log_data_import.hpp"
 
 using namespace kerf;
