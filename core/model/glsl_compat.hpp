@@ -3,7 +3,7 @@
 //
 // The kernels are written once in the subset of GLSL 3.30 that is also C++20 with GLM (GLM mirrors
 // GLSL's types and built-ins; Blender's GPU_shader_shared_utils.h is the precedent). The shaders
-// include them as text (widgets/gl/wood_program.cpp); the core includes them inside a struct
+// include them as text (gpu/wood_program.cpp); the core includes them inside a struct
 // (model/noise_kernels.hpp, material/wood_kernels.hpp), so their functions become inline member
 // functions that see the struct's members as the shaders see uniforms.
 //
