@@ -8,6 +8,7 @@
 #include "fit/held_out_faces.hpp"
 #include "hold_out_option.hpp"
 #include "image/gray_image.hpp"
+#include "io/image.hpp"
 #include "io/sample_folder.hpp"
 #include "number_option.hpp"
 #include "params/builtin_presets.hpp"

@@ -12,6 +12,7 @@
 #include "../core/spruce_log.hpp"
 #include "gl_renderer_fixture.hpp"
 #include "gpu/gpu_image_renderer.hpp"
+#include "io/image.hpp"
 #include "io/log_data_import.hpp"
 
 using namespace kerf;

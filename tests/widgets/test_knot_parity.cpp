@@ -12,6 +12,7 @@
 #include "gl_renderer_fixture.hpp"
 #include "gpu/gpu_board_renderer.hpp"
 #include "image/image_difference.hpp"
+#include "io/image.hpp"
 #include "io/log_data_import.hpp"
 
 using namespace kerf;
