@@ -1,4 +1,4 @@
-// kerf_bench_knots_gpu: the GLSL knot model (widgets/gl/gpu_board_renderer.*) on the default flat-sawn
+// kerf_bench_knots_gpu: the GLSL knot model (gpu/gpu_board_renderer.*) on the default flat-sawn
 // board of the CT-measured spruce log (all 108 knots, culled per board and per tile on the CPU), 1200 x
 // 1200 px, offscreen. Prints the median over the runs of the whole render (culling, upload, draw, readback
 // into an RGB float image) and of each phase; the program is compiled once, before the timed runs.
@@ -14,8 +14,8 @@
 #include <thread>
 #include <vector>
 
-#include "gl/gpu_board_renderer.hpp"
-#include "gl/offscreen_gl_context.hpp"
+#include "gpu/gpu_board_renderer.hpp"
+#include "gpu/offscreen_gl_context.hpp"
 #include "io/log_data_import.hpp"
 #include "util/resource_usage.hpp"
 

@@ -14,7 +14,7 @@
 
 #include "demo/demo_block.hpp"
 #include "document.hpp"
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "main_window.hpp"
 #include "viewport3d.hpp"
 

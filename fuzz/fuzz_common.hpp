@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string_view>
 
-#include "io/gray_image.hpp"
+#include "image/gray_image.hpp"
 
 namespace kerf::fuzz {
 

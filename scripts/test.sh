@@ -5,8 +5,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh
-# core/'s include graph: no Qt/OpenGL in core, no folder dependency outside the allowed graph (issue 15).
-python3 scripts/check-folder-graph.py
+# core/'s include graph: no Qt/OpenGL in core, no folder dependency outside the allowed graph, no known
+# debt (issue 15).
+python3 scripts/check-folder-graph.py --strict
+# The headless GPU renderer (gpu/, kerf_gpu) and kerf-cli's commands use no Qt Widgets (issue 15).
+python3 scripts/check-gpu-target.py
 # Formatting as .clang-format says (issue 15 item 5); `bash scripts/check-format.sh --fix` applies it.
 bash scripts/check-format.sh
 # Warnings are errors here (issue 15 item 5): a warning fails the build, as it should fail a review.

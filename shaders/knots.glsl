@@ -1,7 +1,7 @@
 // The knot model of Larsson et al. 2022 (docs/knots.md) in GLSL: the twin of core/field/knot_field.cpp
 // (KnotField::evaluate, KnotField::color) and of the log lookups of core/field/log_model.cpp. Same float
 // operations in the same order; the per-knot noise is core's own table (KnotField::speedNoiseTable, built
-// with the integer hashes of core/material/noise.hpp), uploaded as is and interpolated the same way, so
+// with the integer hashes of core/model/noise.hpp), uploaded as is and interpolated the same way, so
 // no noise is recomputed here. Tables are read with texelFetch only (no filtering), so every sample is
 // core's float.
 //

@@ -4,7 +4,7 @@
 // core/model/kernels/wood.glsl lists what a back-end provides. tests/widgets/test_gpu_parity.cpp
 // renders both back-ends and compares them (precision, sampling).
 //
-// Assembled by widgets/gl/wood_program.cpp: "#version 330 core", kernels/glsl_prelude.glsl, the
+// Assembled by gpu/wood_program.cpp: "#version 330 core", kernels/glsl_prelude.glsl, the
 // schema's struct WoodParameters and `uniform WoodParameters P` (kerf::glslUniformDeclarations()), 
 // kernels/noise.glsl (with kPi), this file, kernels/wood.glsl.
 

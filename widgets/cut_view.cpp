@@ -13,9 +13,9 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
-#include "gl/board_wood_textures.hpp"
-#include "gl/gl_helpers.hpp"
-#include "gl/wood_program.hpp"
+#include "gpu/board_wood_textures.hpp"
+#include "gpu/gl_helpers.hpp"
+#include "gpu/wood_program.hpp"
 
 namespace kerf {
 

@@ -16,10 +16,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "gl/board_wood_textures.hpp"
-#include "gl/gl_helpers.hpp"
-#include "gl/part_mesh_renderer.hpp"
-#include "gl/wood_program.hpp"
+#include "gpu/board_wood_textures.hpp"
+#include "gpu/gl_helpers.hpp"
+#include "gpu/part_mesh_renderer.hpp"
+#include "gpu/wood_program.hpp"
 
 namespace kerf {
 namespace {

@@ -20,7 +20,7 @@
 //
 // Part (issue 7): setPart() shows a placed mesh inside the block, coloured per fragment by the same wood
 // model (the block's wood where the part would be cut from it), with the block drawn ghosted around it
-// (widgets/gl/part_mesh_renderer.hpp). The cut is not applied while a part is shown.
+// (gpu/part_mesh_renderer.hpp). The cut is not applied while a part is shown.
 //
 // Navigation: left-drag elsewhere orbits, right/middle-drag pans, the wheel zooms towards the cursor;
 // keys: F fit, 1 / 3 / 7 front / right / top (Ctrl: back / left / bottom, as in Blender), Home reset.

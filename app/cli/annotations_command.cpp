@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "io/image.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "io/project.hpp"
 #include "number_option.hpp"
 #include "rings/annotations.hpp"

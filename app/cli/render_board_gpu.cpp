@@ -5,8 +5,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "gl/gpu_board_renderer.hpp"
-#include "gl/offscreen_gl_context.hpp"
+#include "gpu/gpu_board_renderer.hpp"
+#include "gpu/offscreen_gl_context.hpp"
 #include "util/error.hpp"
 #include "util/resource_usage.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// render-board --gpu: the board rendered by the GLSL knot model (widgets/gl/gpu_board_renderer.hpp) in an
+// render-board --gpu: the board rendered by the GLSL knot model (gpu/gpu_board_renderer.hpp) in an
 // offscreen OpenGL 3.3 core context. Only built with the GUI (KERF_BUILD_GUI); kerf-cli's CPU path needs
 // no display.
 #include <string>

@@ -8,6 +8,7 @@
 #include "command.hpp"
 #include "geometry/cut_plane.hpp"
 #include "io/atomic_file.hpp"
+#include "io/image.hpp"
 #include "io/project.hpp"
 #include "number_option.hpp"
 #include "render/renderers.hpp"

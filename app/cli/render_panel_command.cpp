@@ -6,6 +6,7 @@
 #include "command.hpp"
 #include "field/knot_field.hpp"
 #include "io/atomic_file.hpp"
+#include "io/image.hpp"
 #include "log_arguments.hpp"
 #include "number_option.hpp"
 #include "render/panel_render.hpp"

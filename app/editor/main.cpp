@@ -10,7 +10,7 @@
 #include <QTimer>
 #include <cstdio>
 
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "main_window.hpp"
 #include "viewport3d.hpp"
 #include "window_grab.hpp"

@@ -26,6 +26,7 @@
 #include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
+#include "io/image.hpp"
 #include "job_runner.hpp"
 #include "job_status_widget.hpp"
 #include "log_panel.hpp"

@@ -8,6 +8,7 @@
 #include "annotation_layer.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "main_window.hpp"
 #include "rings/annotations.hpp"
 #include "rings/contours.hpp"

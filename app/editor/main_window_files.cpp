@@ -15,6 +15,7 @@
 #include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
+#include "io/image.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
 #include "parameter_panel.hpp"

@@ -25,6 +25,7 @@
 #include "background_pool.hpp"
 #include "corner_picker_view.hpp"
 #include "faces_view.hpp"
+#include "io/image.hpp"
 #include "qt_image.hpp"
 #include "util/error.hpp"
 

@@ -1,5 +1,6 @@
 #include "demo/demo_block.hpp"
 
+#include "io/mokume_annotation_files.hpp"
 #include "rings/annotations.hpp"
 #include "rings/ring_metrics.hpp"
 
@@ -11,7 +12,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/block_knots_json.hpp"
-#include "material/noise.hpp"
+#include "model/noise.hpp"
 #include "render/renderers.hpp"
 #include "util/error.hpp"
 

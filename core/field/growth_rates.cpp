@@ -7,7 +7,7 @@
 #include <string>
 
 #include "field/bspline.hpp"
-#include "material/noise.hpp"
+#include "model/noise.hpp"
 #include "params/parameter_schema.hpp"
 #include "util/error.hpp"
 

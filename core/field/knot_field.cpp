@@ -5,7 +5,7 @@
 #include <glm/common.hpp>
 #include <numbers>
 
-#include "material/noise.hpp"
+#include "model/noise.hpp"
 #include "util/error.hpp"
 
 namespace kerf {

@@ -106,7 +106,7 @@ class KnotField {
             std::vector<int>& out) const;
   std::span<const int> allKnots() const { return allKnots_; }
 
-  // The tabulated noise tables, for the GLSL twin (widgets/gl/gpu_board_renderer.*): per knot
+  // The tabulated noise tables, for the GLSL twin (gpu/gpu_board_renderer.*): per knot
   // kNoiseTableTimes rows (stem time 0..kNoiseTableMaxTime) of kNoiseTableAngles angles (0..2 pi).
   static constexpr int kNoiseTableAngles = 64, kNoiseTableTimes = 64;
   static constexpr float kNoiseTableMaxTime = 1.5f;

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <vector>
 
-#include "model/wood_kernels.hpp"
+#include "material/wood_kernels.hpp"
 
 namespace kerf::colour_fit {
 

@@ -14,7 +14,7 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
-#include "io/gray_image.hpp"
+#include "image/gray_image.hpp"
 
 #include "geometry/block.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// A plain float image (values 0..1, interleaved channels) and reading/writing it with OpenImageIO.
+// Reading and writing image files (image/image.hpp) with OpenImageIO.
 #include <filesystem>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -7,23 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "image/image.hpp"
 #include "util/size_limits.hpp"
 
 namespace kerf {
-
-struct Image {
-  int width = 0, height = 0, channels = 3;
-  std::vector<float> pixels;  // row-major, top row first, `channels` floats per pixel
-
-  Image() = default;
-  Image(int w, int h, int c)
-      : width(w), height(h), channels(c), pixels(static_cast<std::size_t>(w) * h * c, 0.0f) {}
-  float* pixel(int x, int y) { return &pixels[(static_cast<std::size_t>(y) * width + x) * channels]; }
-  const float* pixel(int x, int y) const {
-    return &pixels[(static_cast<std::size_t>(y) * width + x) * channels];
-  }
-  bool empty() const { return pixels.empty(); }
-};
 
 // readImage refuses files over kMaxImagePixels (util/size_limits.hpp) from their header, before any pixel
 // memory is taken, so a photo that claims 20000 x 20000 pixels (or a corrupt header) cannot exhaust
@@ -43,13 +30,5 @@ void writeImage(const std::filesystem::path& path, const Image& image, int bits 
 // as OpenImageIO drives it, does not report a failed write (a full disk, a quota), so a truncated PNG
 // would otherwise replace a good file. Throws InputError naming `target`.
 void verifyWrittenImage(const std::filesystem::path& written, const std::filesystem::path& target);
-
-// Mean absolute difference per channel value, and the share of pixels whose largest channel
-// difference exceeds `pixelTolerance`. Sizes must match (throws InputError otherwise).
-struct ImageDifference {
-  double meanAbs = 0;
-  double shareOverTolerance = 0;
-};
-ImageDifference compareImages(const Image& a, const Image& b, float pixelTolerance);
 
 }  // namespace kerf

@@ -11,7 +11,9 @@
 #include "io/atomic_file.hpp"
 #include "io/block_knots_json.hpp"
 #include "io/json_file.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "io/sample_folder.hpp"
+#include "params/parameter_json.hpp"
 #include "util/error.hpp"
 #include "util/parse_number.hpp"
 
@@ -23,22 +25,10 @@ namespace {
 
 const char* kVersionString = "0.1.0";
 
-// nlohmann stores NaN/inf as null; read numbers strictly so a null or a string is a clear error.
-float readNumber(const json& value, const std::string& what) {
-  if (!value.is_number()) throw InputError(what + " must be a number, got " + describeJson(value));
-  return checkedNumber<float>(value.get<double>(), what);
-}
-
 // A grid size: a whole number that an int holds (2^32 + 8 must not wrap to 8, 8.9 not become 8).
 int readCount(const json& value, const std::string& what) {
   if (!value.is_number()) throw InputError(what + " must be a whole number, got " + describeJson(value));
   return checkedNumber<int>(value.get<double>(), what, 0, std::numeric_limits<int>::max());
-}
-
-glm::vec3 readVec3(const json& value, const std::string& what) {
-  if (!value.is_array() || value.size() != 3)
-    throw InputError(what + " must be a list of 3 numbers, got " + describeJson(value));
-  return {readNumber(value[0], what), readNumber(value[1], what), readNumber(value[2], what)};
 }
 
 json writeVec3(glm::vec3 v) {
@@ -64,39 +54,6 @@ Appearance appearanceFromName(const std::string& name) {
   throw InputError("unknown appearance \"" + name + "\" (procedural or photo)");
 }
 
-json parametersToJson(const WoodParameters& params) {
-  json out = json::object();
-  const auto schema = parameterSchema();
-  for (std::size_t i = 0; i < schema.size(); ++i) {
-    const auto values = params.components(i);
-    if (values.size() == 1) {
-      out[std::string(schema[i].id)] =
-          schema[i].kind == ParamKind::Integer ? json(static_cast<long>(values[0])) : json(values[0]);
-    } else {
-      out[std::string(schema[i].id)] = json::array({values[0], values[1], values[2]});
-    }
-  }
-  return out;
-}
-
-WoodParameters parametersFromJson(const json& in) {
-  if (!in.is_object()) throw InputError("\"parameters\" must be an object of id: value pairs");
-  WoodParameters params;
-  for (const auto& [id, value] : in.items()) {
-    const auto index = parameterIndex(id);
-    if (!index) throw InputError("unknown parameter \"" + id + "\" (see `kerf-cli params` for the list)");
-    const auto target = params.components(*index);
-    if (target.size() == 1) {
-      target[0] = readNumber(value, "parameter " + id);
-    } else {
-      const glm::vec3 v = readVec3(value, "parameter " + id);
-      target[0] = v.x, target[1] = v.y, target[2] = v.z;
-    }
-  }
-  validate(params);
-  return params;
-}
-
 json growthRatesToJson(const GrowthRates& g) {
   return {{"heights", g.heights},
           {"azimuths", g.azimuths},
@@ -119,20 +76,20 @@ GrowthRates growthRatesFromJson(const json& in) {
     if (!hr.is_array() || hr.size() != 2 || !rr.is_array() || rr.size() != 2) {
       throw InputError("growth_rates ranges must be [min, max] pairs");
     }
-    g.heightMin = readNumber(hr[0], "growth_rates.height_range_mm");
-    g.heightMax = readNumber(hr[1], "growth_rates.height_range_mm");
-    g.radiusMin = readNumber(rr[0], "growth_rates.radius_range_mm");
-    g.radiusMax = readNumber(rr[1], "growth_rates.radius_range_mm");
+    g.heightMin = readJsonNumber(hr[0], "growth_rates.height_range_mm");
+    g.heightMax = readJsonNumber(hr[1], "growth_rates.height_range_mm");
+    g.radiusMin = readJsonNumber(rr[0], "growth_rates.radius_range_mm");
+    g.radiusMax = readJsonNumber(rr[1], "growth_rates.radius_range_mm");
     if (in.contains("azimuth_range_rad")) {  // absent in older files: the full circle
       const json& ar = in.at("azimuth_range_rad");
       if (!ar.is_array() || ar.size() != 2) throw InputError("growth_rates ranges must be [min, max] pairs");
-      g.azimuthMin = readNumber(ar[0], "growth_rates.azimuth_range_rad");
-      g.azimuthMax = readNumber(ar[1], "growth_rates.azimuth_range_rad");
+      g.azimuthMin = readJsonNumber(ar[0], "growth_rates.azimuth_range_rad");
+      g.azimuthMax = readJsonNumber(ar[1], "growth_rates.azimuth_range_rad");
     }
     const json& rates = in.at("rates");
     if (!rates.is_array()) throw InputError("growth_rates.rates must be a list of numbers");
     g.rates.reserve(rates.size());
-    for (const json& r : rates) g.rates.push_back(readNumber(r, "growth_rates.rates entry"));
+    for (const json& r : rates) g.rates.push_back(readJsonNumber(r, "growth_rates.rates entry"));
     g.validate();
     return g;
   } catch (const json::exception& e) {
@@ -190,7 +147,7 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
     const json& block = in["block"];
     if (!block.is_object() || !block.contains("size_mm"))
       throw InputError("\"block\" needs \"size_mm\": [x, y, z]");
-    project.block = Block(readVec3(block["size_mm"], "block.size_mm"));
+    project.block = Block(readJsonVec3(block["size_mm"], "block.size_mm"));
   }
   if (in.contains("faces")) {
     const json& faces = in["faces"];
@@ -231,9 +188,10 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
     const json& cut = in["view"]["cut_plane"];
     if (!cut.is_object()) throw InputError("\"view.cut_plane\" must be an object");
     CutPlaneSetting setting;
-    setting.offsetMm = readNumber(cut.value("offset_mm", json(0.0)), "view.cut_plane.offset_mm");
-    setting.azimuthDeg = readNumber(cut.value("azimuth_deg", json(0.0)), "view.cut_plane.azimuth_deg");
-    setting.elevationDeg = readNumber(cut.value("elevation_deg", json(0.0)), "view.cut_plane.elevation_deg");
+    setting.offsetMm = readJsonNumber(cut.value("offset_mm", json(0.0)), "view.cut_plane.offset_mm");
+    setting.azimuthDeg = readJsonNumber(cut.value("azimuth_deg", json(0.0)), "view.cut_plane.azimuth_deg");
+    setting.elevationDeg =
+        readJsonNumber(cut.value("elevation_deg", json(0.0)), "view.cut_plane.elevation_deg");
     project.cutPlane = setting;
     const json enabled = cut.value("enabled", json(false));
     if (!enabled.is_boolean()) throw InputError("view.cut_plane.enabled must be true or false");

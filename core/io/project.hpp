@@ -13,6 +13,7 @@
 #include "geometry/cut_plane.hpp"
 #include "geometry/face_set.hpp"
 #include "io/project_log.hpp"
+#include "params/parameter_json.hpp"  // the parameters alone, as projects store them
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
 
@@ -63,10 +64,6 @@ struct Project {
 // and format versions this Kerf does not read. Errors are InputError with a message that names the field.
 nlohmann::json projectToJson(const Project& project, const std::filesystem::path& baseDir);
 Project projectFromJson(const nlohmann::json& json, const std::filesystem::path& baseDir);
-
-// Parameters alone (as in projects and presets): {"growth.ring_width": 3.0, "color.earlywood": [r,g,b], ...}
-nlohmann::json parametersToJson(const WoodParameters& params);
-WoodParameters parametersFromJson(const nlohmann::json& json);  // throws InputError
 
 nlohmann::json growthRatesToJson(const GrowthRates& rates);
 GrowthRates growthRatesFromJson(const nlohmann::json& json);  // throws InputError

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "geometry/block.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "rings/annotations.hpp"
 
 namespace kerf {

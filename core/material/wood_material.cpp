@@ -1,6 +1,6 @@
 #include "material/wood_material.hpp"
 
-#include "material/noise.hpp"
+#include "model/noise.hpp"
 
 namespace kerf {
 

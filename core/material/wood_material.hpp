@@ -4,7 +4,7 @@
 // block it gives the growth time, the colour and the fibre direction.
 //
 // The model itself is written once, in core/model/kernels/wood.glsl, and compiled both here (through
-// model/wood_kernels.hpp) and into the shaders of the 3D view (issue 15); see that file for the paper
+// material/wood_kernels.hpp) and into the shaders of the 3D view (issue 15); see that file for the paper
 // sections. This class owns the CPU back-end of it.
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -12,7 +12,7 @@
 
 #include "field/block_knots.hpp"
 #include "field/growth_field.hpp"
-#include "model/wood_kernels.hpp"
+#include "material/wood_kernels.hpp"
 #include "params/parameter_schema.hpp"
 
 namespace kerf {

@@ -3,8 +3,8 @@
 //
 // The kernels are written once in the subset of GLSL 3.30 that is also C++20 with GLM (GLM mirrors
 // GLSL's types and built-ins; Blender's GPU_shader_shared_utils.h is the precedent). The shaders
-// include them as text (widgets/gl/wood_program.cpp); the core includes them inside a struct
-// (model/noise_kernels.hpp, model/wood_kernels.hpp), so their functions become inline member
+// include them as text (gpu/wood_program.cpp); the core includes them inside a struct
+// (model/noise_kernels.hpp, material/wood_kernels.hpp), so their functions become inline member
 // functions that see the struct's members as the shaders see uniforms.
 //
 // Rules of the subset, checked by both compilers (tests/core/test_kernel_sources.cpp checks the rest):

@@ -1,6 +1,6 @@
 #pragma once
 // The model's hash and value noise (kernels/noise.glsl) compiled for the CPU: the same source as the
-// shaders' (issue 15). Stateless; kerf::noise (material/noise.hpp) is the C++-style interface to it.
+// shaders' (issue 15). Stateless; kerf::noise (model/noise.hpp) is the C++-style interface to it.
 #include "model/glsl_compat.hpp"
 
 namespace kerf::glsl {

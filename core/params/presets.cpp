@@ -1,16 +1,12 @@
 #include "params/presets.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <set>
 
-#include "io/json_file.hpp"
-#include "io/project.hpp"
+#include "params/parameter_json.hpp"
 #include "util/error.hpp"
 #include "util/parse_number.hpp"
 
 namespace kerf {
-namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
@@ -122,47 +118,6 @@ json presetToJson(const Preset& preset) {
   if (!preset.description.empty()) out["description"] = preset.description;
   out["parameters"] = preset.parameters;
   return out;
-}
-
-Preset loadPreset(const fs::path& file) {
-  const json in = readJsonFile(file, "preset");
-  Preset preset;
-  try {
-    preset = presetFromJson(in);
-  } catch (const InputError& e) {
-    throw InputError("preset " + file.string() + ": " + e.what());
-  } catch (const json::exception& e) {
-    throw InputError("preset " + file.string() + ": a value has the wrong type (" + e.what() + ")");
-  }
-  if (preset.id != file.stem().string()) {
-    throw InputError("preset " + file.string() + ": its id \"" + preset.id + "\" must match the file name");
-  }
-  return preset;
-}
-
-std::vector<Preset> loadPresets(const fs::path& folder) {
-  std::error_code error;
-  if (!fs::is_directory(folder, error)) {
-    throw InputError("preset folder " + folder.string() + " does not exist or is not a folder");
-  }
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  std::vector<Preset> presets;
-  std::set<std::string> ids;
-  for (const auto& file : files) {
-    presets.push_back(loadPreset(file));
-    if (!ids.insert(presets.back().id).second) {
-      throw InputError("preset " + file.string() + ": another preset already has the id \"" +
-                       presets.back().id + "\"");
-    }
-  }
-  std::sort(presets.begin(), presets.end(), [](const Preset& a, const Preset& b) {
-    return a.name != b.name ? a.name < b.name : a.id < b.id;
-  });
-  return presets;
 }
 
 const Preset* findPreset(std::span<const Preset> presets, std::string_view id) {

@@ -15,7 +15,6 @@
 // growth (fitted or set for this log), the per-face photo tints, and the random seed: the schema's
 // ParamScope::Block parameters (wood_parameters.def). A preset may not list those ids (presetFromJson
 // refuses them), so choosing a species never moves the rings of a fitted block.
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
@@ -52,12 +51,6 @@ std::span<const std::string_view> presetKeptParameterIds();
 // naming the offending field.
 Preset presetFromJson(const nlohmann::json& json);
 nlohmann::json presetToJson(const Preset& preset);
-
-// Reads one preset file; errors name the file. The id must equal the file stem.
-Preset loadPreset(const std::filesystem::path& file);
-// Every *.json in `folder`, sorted by name (then id). Throws InputError for a missing folder, a
-// malformed file (naming it) or two presets with the same id.
-std::vector<Preset> loadPresets(const std::filesystem::path& folder);
 
 // The preset with this id, or nullptr.
 const Preset* findPreset(std::span<const Preset> presets, std::string_view id);

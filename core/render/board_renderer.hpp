@@ -13,7 +13,7 @@
 
 #include "field/knot_field.hpp"
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {
@@ -63,7 +63,7 @@ struct BoardRenderStats {
 };
 
 // Where a board face's pixels lie in the log and which knots can reach them: computed once and shared by
-// the CPU renderer and its GLSL twin (widgets/gl/gpu_board_renderer.*), so both sample the same points
+// the CPU renderer and its GLSL twin (gpu/gpu_board_renderer.*), so both sample the same points
 // and keep the same knots.
 struct BoardFaceLayout {
   glm::ivec2 size{0};                       // pixels

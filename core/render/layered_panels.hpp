@@ -14,7 +14,7 @@
 
 #include "field/knot_field.hpp"
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "render/board_renderer.hpp"
 #include "util/progress.hpp"
 

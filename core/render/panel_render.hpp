@@ -9,7 +9,7 @@
 
 #include "field/knot_field.hpp"
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {

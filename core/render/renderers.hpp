@@ -4,7 +4,7 @@
 #include <array>
 
 #include "geometry/cut_plane.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "render/wood_model.hpp"
 #include "util/progress.hpp"
 

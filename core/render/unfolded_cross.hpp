@@ -4,7 +4,7 @@
 #include <array>
 
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 
 namespace kerf {
 

@@ -1,7 +1,5 @@
 #include "render/wood_model.hpp"
 
-#include "io/project.hpp"
-
 namespace kerf {
 
 WoodModel::WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates,
@@ -14,8 +12,5 @@ WoodModel::WoodModel(const Block& block, const WoodParameters& params, const Gro
       std::make_unique<const BlockKnots>(knots, KnotSettings::fromParameters(*params_), params_->ringWidth);
   material_ = std::make_unique<const WoodMaterial>(*params_, *field_, knots_.get());
 }
-
-WoodModel::WoodModel(const Project& project)
-    : WoodModel(project.block, project.params, project.effectiveRates(), project.knots) {}
 
 }  // namespace kerf

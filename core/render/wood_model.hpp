@@ -20,6 +20,7 @@ class WoodModel {
   // knots: the block's knots (Mokume Sec. 5.2.4), merged with the settings of the knots.* parameters.
   WoodModel(const Block& block, const WoodParameters& params, const GrowthRates& rates,
             const std::vector<BlockKnot>& knots = {});
+  // A project's model: defined in io/project_wood_model.cpp, beside Project (render/ sits below io/).
   explicit WoodModel(const Project& project);
   WoodModel(const WoodModel&) = delete;
   WoodModel& operator=(const WoodModel&) = delete;

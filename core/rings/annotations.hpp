@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "geometry/block.hpp"
-#include "io/gray_image.hpp"
+#include "image/gray_image.hpp"
 
 namespace kerf {
 
@@ -134,7 +134,8 @@ std::vector<RingTrace> tracesFromContours(const std::vector<FaceContour>& contou
 // Numbered rings: `<F>_ann.png`, one channel (the first channel is used), 8 bits, 256 x 256 or the face
 // photo's size; each pixel's value is the year of the ring trace through it, 255 is background.
 // Knots: `<F>_knot.png`, the pixels with grey value 180..220 mark a knot's centre on that face (each
-// connected group of such pixels is one mark, at its centroid).
+// connected group of such pixels is one mark, at its centroid). Reading and writing the files:
+// io/mokume_annotation_files.hpp.
 
 inline constexpr const char* kMokumeRingSuffix = "_ann";
 inline constexpr const char* kMokumeKnotSuffix = "_knot";
@@ -154,26 +155,6 @@ std::vector<KnotMark> knotMarksFromImage(const GrayImage8& image, FaceId face, c
 GrayImage8 knotImageFromMarks(const Annotations& annotations, FaceId face, const Block& block,
                               glm::ivec2 imageSize);
 
-// Files. Reading throws InputError naming the file when it cannot be read.
-GrayImage8 readGrayImage8(const std::filesystem::path& path);
-void writeGrayImage8(const std::filesystem::path& path, const GrayImage8& image);  // PNG, atomically
-
-// The annotation files of a sample folder that exist: `<F>_ann.png` and `<F>_knot.png` (also .tif).
-struct MokumeAnnotationFiles {
-  std::array<std::filesystem::path, 6> rings, knots;  // empty where absent
-  bool any() const;
-};
-MokumeAnnotationFiles findMokumeAnnotationFiles(const std::filesystem::path& folder);
-// Reads them: numbered traces, and knot marks. The marks of all faces are grouped into knots in face
-// order A..F, two marks per knot (the first two marks are knot 0, the next two knot 1, ...), as a
-// Mokume sample has at most one knot crossing two faces.
-Annotations readMokumeAnnotations(const MokumeAnnotationFiles& files, const Block& block);
-
-// Writes `<F>_ann.png` for every face with numbered traces and `<F>_knot.png` for every face with knot
-// marks into `folder` (created if needed), each of imageSizes[face] pixels. Returns the files written.
-std::vector<std::filesystem::path> writeMokumeAnnotations(const Annotations& annotations, const Block& block,
-                                                          const std::filesystem::path& folder,
-                                                          const std::array<glm::ivec2, 6>& imageSizes);
 // The image size used for export when there is no photo: Mokume's 6.4 px/mm (256 px on 40 mm).
 glm::ivec2 mokumeImageSize(const Block& block, FaceId face);
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 
 namespace kerf {
 

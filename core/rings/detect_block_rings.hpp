@@ -11,7 +11,7 @@
 
 #include "geometry/block.hpp"
 #include "geometry/face_set.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "rings/contours.hpp"
 #include "rings/ring_detector.hpp"
 #include "util/progress.hpp"

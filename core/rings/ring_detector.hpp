@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {

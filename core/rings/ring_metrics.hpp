@@ -6,7 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 
 namespace kerf {
 

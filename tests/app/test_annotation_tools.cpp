@@ -17,7 +17,7 @@
 #include "demo_window.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "main_window.hpp"
 #include "window_grab.hpp"
 

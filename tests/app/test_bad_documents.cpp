@@ -12,7 +12,7 @@
 #include "demo/demo_block.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "main_window.hpp"

@@ -24,7 +24,7 @@
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "fit_quality.hpp"
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "job_runner.hpp"
 #include "log_panel.hpp"
 #include "main_window.hpp"

@@ -19,7 +19,7 @@
 #include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "image_change.hpp"
 #include "image_pane.hpp"
 #include "io/log_data_import.hpp"

@@ -21,7 +21,7 @@
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "field/growth_field.hpp"
-#include "gl/surface_format.hpp"
+#include "gpu/surface_format.hpp"
 #include "image_change.hpp"
 #include "job_runner.hpp"
 #include "log_panel.hpp"

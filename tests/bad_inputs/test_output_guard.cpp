@@ -13,6 +13,7 @@
 
 #include "bad_input_files.hpp"
 #include "io/atomic_file.hpp"
+#include "io/image.hpp"
 #include "io/output_guard.hpp"
 #include "io/project.hpp"
 #include "run_cli.hpp"

@@ -18,6 +18,7 @@
 #include "field/block_knots.hpp"
 #include "field/log_model.hpp"
 #include "io/block_knots_json.hpp"
+#include "io/image.hpp"
 #include "io/log_data_import.hpp"
 #include "io/project.hpp"
 #include "refused_run.hpp"

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <random>
 
-#include "io/gray_image.hpp"
+#include "image/gray_image.hpp"
 #include "io/image.hpp"
 
 namespace kerf::testing {

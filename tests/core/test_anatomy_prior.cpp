@@ -13,6 +13,7 @@
 #include "fit/anatomy_prior.hpp"
 #include "fit/iso_contours.hpp"
 #include "fit/pith_fit.hpp"
+#include "io/preset_files.hpp"
 #include "params/presets.hpp"
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"

@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "io/image.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "rings/annotations.hpp"
 #include "rings/contours.hpp"
 #include "util/error.hpp"

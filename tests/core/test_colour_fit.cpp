@@ -15,6 +15,7 @@
 #include "fit/colour_bins.hpp"
 #include "fit/colour_fit.hpp"
 #include "fit/growth_field_fit.hpp"
+#include "image/image_difference.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "render/renderers.hpp"

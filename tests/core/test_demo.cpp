@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "demo/demo_block.hpp"
+#include "image/image_difference.hpp"
 #include "render/renderers.hpp"
 
 using namespace kerf;

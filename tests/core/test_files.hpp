@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "image/image_difference.hpp"
 #include "io/image.hpp"
 
 namespace kerf::testing {

@@ -13,6 +13,7 @@
 #include "demo/demo_block.hpp"
 #include "export/export_job.hpp"
 #include "export/part_export.hpp"
+#include "image/image_difference.hpp"
 #include "mesh/bake_part_texture.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "mesh/uv_atlas.hpp"

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "io/preset_files.hpp"
 #include "io/project.hpp"
 #include "params/builtin_presets.hpp"
 #include "params/presets.hpp"

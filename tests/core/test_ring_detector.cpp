@@ -12,6 +12,7 @@
 
 #include "demo/demo_block.hpp"
 #include "io/image.hpp"
+#include "io/preset_files.hpp"
 #include "io/project.hpp"
 #include "params/presets.hpp"
 #include "render/renderers.hpp"

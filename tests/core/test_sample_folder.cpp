@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/image.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "io/project.hpp"
 #include "rings/annotations.hpp"
 #include "util/error.hpp"

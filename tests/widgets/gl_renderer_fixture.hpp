@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "gl/offscreen_gl_context.hpp"
+#include "gpu/offscreen_gl_context.hpp"
 
 namespace kerf::testing {
 

@@ -10,8 +10,9 @@
 #include <cmath>
 
 #include "../core/spruce_log.hpp"
-#include "gl/gpu_image_renderer.hpp"
 #include "gl_renderer_fixture.hpp"
+#include "gpu/gpu_image_renderer.hpp"
+#include "io/image.hpp"
 #include "io/log_data_import.hpp"
 
 using namespace kerf;

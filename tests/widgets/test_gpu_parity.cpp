@@ -14,9 +14,10 @@
 #include <glm/geometric.hpp>
 
 #include "demo/demo_block.hpp"
-#include "gl/gpu_image_renderer.hpp"
-#include "gl/wood_program.hpp"
 #include "gl_renderer_fixture.hpp"
+#include "gpu/gpu_image_renderer.hpp"
+#include "gpu/wood_program.hpp"
+#include "image/image_difference.hpp"
 #include "render/renderers.hpp"
 
 using namespace kerf;

@@ -1,4 +1,4 @@
-// CPU/GPU parity of the knot model: the GLSL twin (shaders/knots.glsl, widgets/gl/gpu_board_renderer.*)
+// CPU/GPU parity of the knot model: the GLSL twin (shaders/knots.glsl, gpu/gpu_board_renderer.*)
 // against core's renderBoardFace, on the three golden boards of tests/core/test_knot_render.cpp (boards
 // cut from the CT-measured spruce log), on a random log with a rotated board, and without culling.
 #include <QGuiApplication>
@@ -9,8 +9,10 @@
 #include <memory>
 
 #include "../core/spruce_log.hpp"
-#include "gl/gpu_board_renderer.hpp"
 #include "gl_renderer_fixture.hpp"
+#include "gpu/gpu_board_renderer.hpp"
+#include "image/image_difference.hpp"
+#include "io/image.hpp"
 #include "io/log_data_import.hpp"
 
 using namespace kerf;

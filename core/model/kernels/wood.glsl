@@ -1,5 +1,5 @@
-// The procedural wood texture, single source for the core (model/wood_kernels.hpp) and the shaders
-// (widgets/gl/wood_program.cpp): the forward model of Liu et al. 2016 (Sec. 4) as simplified and
+// The procedural wood texture, single source for the core (material/wood_kernels.hpp) and the shaders
+// (gpu/wood_program.cpp): the forward model of Liu et al. 2016 (Sec. 4) as simplified and
 // extended by Mokume Sec. 5.3.1 / A.2.3, evaluated on top of the growth field.
 //
 // Colour follows Beer's law (Liu 4.3): every colour is earlywood * (latewood/earlywood)^t, t being the

@@ -1,4 +1,4 @@
-#include "gl/gpu_image_renderer.hpp"
+#include "gpu/gpu_image_renderer.hpp"
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -6,9 +6,9 @@
 #include <QVector3D>
 #include <cmath>
 
-#include "gl/board_wood_textures.hpp"
-#include "gl/gl_helpers.hpp"
-#include "gl/wood_program.hpp"
+#include "gpu/board_wood_textures.hpp"
+#include "gpu/gl_helpers.hpp"
+#include "gpu/wood_program.hpp"
 #include "util/error.hpp"
 
 namespace kerf {

@@ -1,4 +1,4 @@
-#include "gl/wood_program.hpp"
+#include "gpu/wood_program.hpp"
 
 #include <QFile>
 #include <QOpenGLContext>

@@ -1,4 +1,4 @@
-#include "gl/offscreen_gl_context.hpp"
+#include "gpu/offscreen_gl_context.hpp"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>

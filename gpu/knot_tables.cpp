@@ -1,12 +1,12 @@
-#include "gl/knot_tables.hpp"
+#include "gpu/knot_tables.hpp"
 
 #include <QOpenGLShaderProgram>
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include "gl/gl_helpers.hpp"
-#include "gl/wood_program.hpp"
+#include "gpu/gl_helpers.hpp"
+#include "gpu/wood_program.hpp"
 
 namespace kerf {
 namespace {

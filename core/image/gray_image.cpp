@@ -1,4 +1,4 @@
-#include "io/gray_image.hpp"
+#include "image/gray_image.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "gl/gpu_board_renderer.hpp"
+#include "gpu/gpu_board_renderer.hpp"
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "gl/gl_helpers.hpp"
-#include "gl/knot_tables.hpp"
-#include "gl/wood_program.hpp"
+#include "gpu/gl_helpers.hpp"
+#include "gpu/knot_tables.hpp"
+#include "gpu/wood_program.hpp"
 #include "params/parameter_schema.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "io/image.hpp"
+#include "image/image.hpp"
 
 namespace kerf {
 

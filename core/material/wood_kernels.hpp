@@ -1,5 +1,5 @@
 #pragma once
-// The procedural wood texture (kernels/wood.glsl) compiled for the CPU: the same source as the
+// The procedural wood texture (model/kernels/wood.glsl) compiled for the CPU: the same source as the
 // shaders' (issue 15). This struct is the CPU back-end of that source: its members are what the
 // shaders get as uniforms, and it defines the three functions the source expects of a back-end (the
 // pith frame, the growth field and the knots, which the GPU reads from textures and uniform arrays).

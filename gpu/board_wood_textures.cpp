@@ -1,10 +1,10 @@
-#include "gl/board_wood_textures.hpp"
+#include "gpu/board_wood_textures.hpp"
 
 #include <QOpenGLShaderProgram>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "gl/gl_helpers.hpp"
-#include "gl/knot_tables.hpp"
+#include "gpu/gl_helpers.hpp"
+#include "gpu/knot_tables.hpp"
 
 namespace kerf {
 

@@ -1,4 +1,4 @@
-#include "gl/part_mesh_renderer.hpp"
+#include "gpu/part_mesh_renderer.hpp"
 
 #include <QOpenGLContext>
 #include <cstddef>
