@@ -13,7 +13,7 @@
 
 #include "field/growth_field.hpp"
 #include "geometry/block.hpp"
-#include "io/image.hpp"
+#include "image/image.hpp"
 #include "params/parameter_schema.hpp"
 
 namespace kerf {

@@ -17,7 +17,7 @@
 #include <span>
 #include <vector>
 
-#include "io/image.hpp"
+#include "image/image.hpp"
 
 namespace kerf {
 
