@@ -51,12 +51,12 @@ void Document::editParameter(std::size_t index, std::array<float, 3> value, bool
   WoodParameters candidate = project_.params;  // refuse a bad value before it reaches the undo stack
   std::copy_n(value.begin(), current.size(), candidate.components(index).begin());
   validate(candidate);
-  undo_.push(new SetParameterCommand(this, index, before, value, finished));
+  undo_.push(setParameterCommand(this, index, before, value, finished));
 }
 
 void Document::applyParameters(const WoodParameters& params, const QString& undoText) {
   validate(params);
-  undo_.push(new SetAllParametersCommand(this, project_.params, params, undoText));
+  undo_.push(setAllParametersCommand(this, project_.params, params, undoText));
 }
 
 void Document::applyGrowthField(const WoodParameters& params, std::optional<GrowthRates> rates,
@@ -66,18 +66,18 @@ void Document::applyGrowthField(const WoodParameters& params, std::optional<Grow
   std::vector<BlockKnot> afterKnots = knots ? std::move(*knots) : project_.knots;
   for (std::size_t i = 0; i < afterKnots.size(); ++i)
     validate(afterKnots[i], "knots[" + std::to_string(i) + "]");
-  undo_.push(new SetGrowthFieldCommand(this, {project_.params, project_.rates, project_.knots},
-                                       {params, std::move(rates), std::move(afterKnots)}, undoText));
+  undo_.push(setGrowthFieldCommand(this, {project_.params, project_.rates, project_.knots},
+                                   {params, std::move(rates), std::move(afterKnots)}, undoText));
 }
 
 void Document::editCutPlane(const CutPlaneSetting& setting, bool finished) {
-  undo_.push(new SetCutPlaneCommand(this, cutPlane(), setting, finished));
+  undo_.push(setCutPlaneCommand(this, cutPlane(), setting, finished));
 }
 
 void Document::replacePhoto(FaceId face, const QString& path, const QImage& image) {
   const int i = faceIndex(face);
-  undo_.push(new ReplacePhotoCommand(this, face, QString::fromStdString(project_.facePhotos[i].string()),
-                                     photos_[i], path, image));
+  undo_.push(replacePhotoCommand(
+      this, face, {QString::fromStdString(project_.facePhotos[i].string()), photos_[i]}, {path, image}));
 }
 
 void Document::replaceBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
@@ -85,13 +85,13 @@ void Document::replaceBlockAndPhotos(const Block& block, const std::array<QStrin
   const Block checked(block.size());  // InputError unless every side is finite and positive
   std::array<QString, 6> beforePaths;
   for (int i = 0; i < 6; ++i) beforePaths[i] = QString::fromStdString(project_.facePhotos[i].string());
-  undo_.push(new SetBlockAndPhotosCommand(this, project_.block, beforePaths, photos_, checked, paths, images,
-                                          undoText));
+  undo_.push(setBlockAndPhotosCommand(this, {project_.block, beforePaths, photos_}, {checked, paths, images},
+                                      undoText));
 }
 
 void Document::editAnnotations(const Annotations& after, const QString& undoText) {
   if (after == project_.annotations) return;
-  undo_.push(new SetAnnotationsCommand(this, project_.annotations, after, undoText));
+  undo_.push(setAnnotationsCommand(this, project_.annotations, after, undoText));
 }
 
 void Document::setCutEnabled(bool enabled) {

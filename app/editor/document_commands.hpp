@@ -1,12 +1,13 @@
 #pragma once
-// Undo commands of the editor (QUndoStack). Each stores both values and asks the Document to apply
-// one or the other. Parameter and cut-plane edits merge while a drag is under way (tiled's
-// ChangeValue pattern): the command stays open until an edit with finished = true arrives, and a drag
-// that ends where it started leaves no step behind.
+// Undo commands of the editor (QUndoStack): each a SwapValueCommand over one of the Document's values,
+// applied through the Document's apply… setter. Parameter and cut-plane edits merge while a drag is under
+// way: the command stays open until an edit with finished = true arrives, and a drag that ends where it
+// started leaves no step behind.
 #include <QImage>
 #include <QUndoCommand>
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "field/block_knots.hpp"
 #include "field/growth_rates.hpp"
@@ -14,6 +15,7 @@
 #include "geometry/cut_plane.hpp"
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
+#include "swap_value_command.hpp"
 
 namespace kerf {
 
@@ -21,108 +23,41 @@ class Document;
 
 enum CommandId { kCutPlaneCommand = 1, kParameterCommandBase = 1000 };
 
-class SetParameterCommand : public QUndoCommand {
- public:
-  SetParameterCommand(Document* document, std::size_t index, std::array<float, 3> before,
-                      std::array<float, 3> after, bool finished);
-  void undo() override;
-  void redo() override;
-  int id() const override { return kParameterCommandBase + static_cast<int>(index_); }
-  bool mergeWith(const QUndoCommand* other) override;
-
- private:
-  Document* document_;
-  std::size_t index_;
-  std::array<float, 3> before_, after_;
-  bool finished_;
+// A whole growth field (a fit's result): parameters, explicit rates (or none) and the knots in it.
+struct GrowthFieldValue {
+  WoodParameters params;
+  std::optional<GrowthRates> rates;
+  std::vector<BlockKnot> knots;
 };
 
-class SetAllParametersCommand : public QUndoCommand {
- public:
-  SetAllParametersCommand(Document* document, const WoodParameters& before, const WoodParameters& after,
-                          const QString& text);
-  void undo() override;
-  void redo() override;
-
- private:
-  Document* document_;
-  WoodParameters before_, after_;
-};
-
-// The growth field as a whole (a fit's result): parameters and explicit rates, before and after.
-class SetGrowthFieldCommand : public QUndoCommand {
- public:
-  // A whole growth field: parameters, explicit rates (or none) and the knots in it.
-  struct Field {
-    WoodParameters params;
-    std::optional<GrowthRates> rates;
-    std::vector<BlockKnot> knots;
-  };
-  SetGrowthFieldCommand(Document* document, Field before, Field after, const QString& text);
-  void undo() override;
-  void redo() override;
-
- private:
-  Document* document_;
-  Field before_, after_;
-};
-
-class SetCutPlaneCommand : public QUndoCommand {
- public:
-  SetCutPlaneCommand(Document* document, const CutPlaneSetting& before, const CutPlaneSetting& after,
-                     bool finished);
-  void undo() override;
-  void redo() override;
-  int id() const override { return kCutPlaneCommand; }
-  bool mergeWith(const QUndoCommand* other) override;
-
- private:
-  Document* document_;
-  CutPlaneSetting before_, after_;
-  bool finished_;
-};
-
-// The annotations (ring traces, knot marks) before and after one edit of them.
-class SetAnnotationsCommand : public QUndoCommand {
- public:
-  SetAnnotationsCommand(Document* document, Annotations before, Annotations after, const QString& text);
-  void undo() override;
-  void redo() override;
-
- private:
-  Document* document_;
-  Annotations before_, after_;
-};
-
-class ReplacePhotoCommand : public QUndoCommand {
- public:
-  ReplacePhotoCommand(Document* document, FaceId face, QString beforePath, QImage beforeImage,
-                      QString afterPath, QImage afterImage);
-  void undo() override;
-  void redo() override;
-
- private:
-  Document* document_;
-  FaceId face_;
-  QString beforePath_, afterPath_;
-  QImage beforeImage_, afterImage_;
+// One face's photo: its file and its image.
+struct FacePhotoValue {
+  QString path;
+  QImage image;
 };
 
 // The block's size and the six face photos together (File > Import Photos).
-class SetBlockAndPhotosCommand : public QUndoCommand {
- public:
-  SetBlockAndPhotosCommand(Document* document, const Block& beforeBlock, std::array<QString, 6> beforePaths,
-                           std::array<QImage, 6> beforeImages, const Block& afterBlock,
-                           std::array<QString, 6> afterPaths, std::array<QImage, 6> afterImages,
-                           const QString& text);
-  void undo() override;
-  void redo() override;
-
- private:
-  Document* document_;
-  Block beforeBlock_, afterBlock_;
-  std::array<QString, 6> beforePaths_, afterPaths_;
-  std::array<QImage, 6> beforeImages_, afterImages_;
+struct BlockAndPhotosValue {
+  Block block;
+  std::array<QString, 6> paths;
+  std::array<QImage, 6> images;
 };
+
+// One parameter (its up to three components); merges while a slider is dragged.
+QUndoCommand* setParameterCommand(Document* document, std::size_t index, std::array<float, 3> before,
+                                  std::array<float, 3> after, bool finished);
+QUndoCommand* setAllParametersCommand(Document* document, const WoodParameters& before,
+                                      const WoodParameters& after, const QString& text);
+QUndoCommand* setGrowthFieldCommand(Document* document, GrowthFieldValue before, GrowthFieldValue after,
+                                    const QString& text);
+QUndoCommand* setCutPlaneCommand(Document* document, const CutPlaneSetting& before,
+                                 const CutPlaneSetting& after, bool finished);
+// The annotations (ring traces, knot marks) before and after one edit of them.
+QUndoCommand* setAnnotationsCommand(Document* document, Annotations before, Annotations after,
+                                    const QString& text);
+QUndoCommand* replacePhotoCommand(Document* document, FaceId face, FacePhotoValue before,
+                                  FacePhotoValue after);
+QUndoCommand* setBlockAndPhotosCommand(Document* document, BlockAndPhotosValue before,
+                                       BlockAndPhotosValue after, const QString& text);
 
 }  // namespace kerf

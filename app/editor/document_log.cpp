@@ -9,13 +9,13 @@ namespace kerf {
 void Document::setLog(std::optional<ProjectLog> log, const QString& undoText) {
   if (log) validate(log->log);
   const Block after = log ? Block(log->board.size) : project_.block;
-  undo_.push(new SetLogCommand(this, project_.log, project_.block, std::move(log), after, undoText));
+  undo_.push(setLogCommand(this, {project_.log, project_.block}, {std::move(log), after}, undoText));
 }
 
 void Document::editBoard(const Board& board, bool finished) {
   if (!project_.log) return;
   const Block checked(board.size);  // InputError unless every side is finite and positive
-  undo_.push(new SetBoardCommand(this, project_.log->board, board, finished));
+  undo_.push(setBoardCommand(this, project_.log->board, board, finished));
 }
 
 void Document::editKnots(std::vector<Knot> knots, const QString& undoText) {
@@ -23,7 +23,7 @@ void Document::editKnots(std::vector<Knot> knots, const QString& undoText) {
   LogModel candidate = project_.log->log;  // refuse a bad knot before it reaches the undo stack
   candidate.knots = knots;
   validate(candidate);
-  undo_.push(new SetKnotsCommand(this, project_.log->log.knots, std::move(knots), undoText));
+  undo_.push(setKnotsCommand(this, project_.log->log.knots, std::move(knots), undoText));
 }
 
 void Document::applyLog(const std::optional<ProjectLog>& log, const Block& block) {

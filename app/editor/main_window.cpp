@@ -5,7 +5,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
@@ -14,13 +13,12 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
-#include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
 #include <QVBoxLayout>
-#include <cmath>
 #include <iterator>
 
+#include "annotation_layer.hpp"
 #include "autosave.hpp"
 #include "cut_plane_controls.hpp"
 #include "cut_view.hpp"
@@ -32,9 +30,6 @@
 #include "log_panel.hpp"
 #include "parameter_panel.hpp"
 #include "params/builtin_presets.hpp"
-#include "qt_image.hpp"
-#include "recent_files.hpp"
-#include "render/renderers.hpp"
 #include "util/error.hpp"
 #include "viewport3d.hpp"
 #include "window_layout.hpp"
@@ -42,17 +37,16 @@
 
 namespace kerf {
 
-MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(parent), settings_(settings) {
+MainWindow::MainWindow(RenderSettings settings, QWidget* parent) : QMainWindow(parent) {
   document_ = new Document(this);
   jobs_ = new JobRunner(this);
   createViews();
   createDocks();
   layout_ = new WindowLayout(this, centralSplitter_);
+  createControllers(settings);  // main_window_controllers.cpp
   createMenus();
   workPath_ = new WorkPath(this, facesStack_);
   connectDocument();
-  autosave_ = new Autosave(document_, {}, 5000, this);
-  connect(autosave_, &Autosave::failed, this, [this](const QString& m) { logMessage("warning", m); });
 
   auto* status = new JobStatusWidget(jobs_, this);
   documentLabel_ = new QLabel(this);
@@ -73,15 +67,9 @@ MainWindow::~MainWindow() {
   jobs_->cancelAll();
   jobs_->waitForDone();
   // The document is deleted with the children, after this destructor; its last signals (the undo stack
-  // turning clean) must not reach this window's slots by then (UBSan: vptr).
-  document_->disconnect(this);
+  // turning clean) must not reach this window or its controllers by then (UBSan: vptr).
+  document_->disconnect();
   layout_->save();
-}
-
-DemoOptions MainWindow::demoOptions() {
-  DemoOptions options;
-  options.facePixels = 256;
-  return options;
 }
 
 void MainWindow::createViews() {
@@ -111,24 +99,13 @@ void MainWindow::createViews() {
     action->setToolTip(tips[i]);
     action->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
     action->setData(i);
-    displayGroup_->addAction(action);
-    connect(action, &QAction::triggered, this, [this, i] {
-      displayChosenByUser_ = true;
-      setFaceDisplay(i);
-    });
+    displayGroup_->addAction(action);  // FacesController::setDisplayControls connects them
   }
   blendSlider_ = new QSlider(Qt::Horizontal, facesBar);
   blendSlider_->setRange(0, 100);
   blendSlider_->setValue(50);
   blendSlider_->setMaximumWidth(160);
   facesBar->addWidget(blendSlider_);
-  connect(blendSlider_, &QSlider::valueChanged, this, [this](int v) {
-    if (displayMode_ == static_cast<int>(FaceDisplay::Split))
-      facesView_->setSplitPosition(v / 100.0);
-    else
-      facesView_->setBlendOpacity(v / 100.0);
-  });
-  connect(facesView_, &FacesView::splitPositionChanged, this, [this] { updateFaceSlider(); });
   auto* facesLayout = new QVBoxLayout(facesPane);
   facesLayout->setContentsMargins(0, 0, 0, 0);
   facesLayout->setSpacing(0);
@@ -149,12 +126,22 @@ void MainWindow::createViews() {
 
   connect(facesView_, &FacesView::cursorPositionChanged, this,
           [this](const QString& t) { cursorLabel_->setText(t); });
-  connect(facesView_, &FacesView::photoDropped, this, &MainWindow::dropPhoto);
-  connect(facesView_, &FacesView::documentDropped, this, [this](const QString& path) {
-    if (maybeSave()) openDocument(path);
-  });
   connect(viewport_, &Viewport3D::cutPlaneEdited, this,
           [this](const CutPlaneSetting& s, bool finished) { document_->editCutPlane(s, finished); });
+}
+
+QToolBar* MainWindow::createAnnotationBar(QWidget* parent) {
+  annotationLayer_ = new AnnotationLayer(facesView_);
+  auto* bar = new QToolBar(tr("Ring Tracing"), parent);
+  bar->setObjectName("ringTracingBar");
+  bar->setIconSize(QSize(16, 16));
+  bar->setStyleSheet(QStringLiteral("QToolButton { padding: 1px 3px; }"));  // ten buttons in half a window
+  bar->addActions(annotationLayer_->toolActions());
+  bar->addSeparator();
+  bar->addActions(annotationLayer_->editActions());
+  connect(annotationLayer_, &AnnotationLayer::message, this,
+          [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+  return bar;
 }
 
 void MainWindow::createDocks() {
@@ -221,11 +208,14 @@ void MainWindow::createDocks() {
   historyDock->setObjectName("historyDock");
   historyDock->setWidget(history_);
   addDockWidget(Qt::BottomDockWidgetArea, historyDock);
-  createLogDocks();  // main_window_log.cpp; WindowLayout places every dock
+  createLogDocks();  // main_window_docks.cpp; WindowLayout places every dock
 }
 
 void MainWindow::connectDocument() {
-  connect(document_, &Document::modelChanged, this, &MainWindow::modelChanged);
+  connect(document_, &Document::modelChanged, this, [this] {
+    parameterPanel_->setParameters(document_->project().params);
+    faces_->showDocumentModel();
+  });
   connect(document_, &Document::cutPlaneChanged, this, [this] {
     const CutPlaneSetting setting = document_->cutPlane();
     viewport_->setCutPlane(setting);
@@ -235,10 +225,9 @@ void MainWindow::connectDocument() {
     cutControls_->setCutEnabled(document_->cutEnabled());
   });
   connect(document_, &Document::photosChanged, this, [this] {
-    clearRingDetection();  // the detection belonged to the photos that were there
     facesView_->setPhotos(document_->photos());
     viewport_->setFacePhotos(document_->photos());
-    updateFacesView();
+    faces_->updateFacesView();
   });
   connect(document_, &Document::documentReset, this, [this] {
     facesView_->setBlock(document_->project().block);
@@ -256,115 +245,12 @@ bool MainWindow::isBusy() const {
   return jobs_->isBusy();
 }
 
-bool MainWindow::showingPhotos() const {
-  return facesView_->display() == FaceDisplay::Photos && document_->hasPhotos();
-}
-
 QString MainWindow::documentName() const {
   return document_->name();
 }
 
-void MainWindow::modelChanged() {
-  const auto model = document_->model();
-  viewport_->setModel(model);
-  cutView_->setModel(model);
-  parameterPanel_->setParameters(document_->project().params);
-  renderFaces();
-}
-
-// The model's faces for the faces view, progressively: a quarter-resolution preview within a few
-// milliseconds, then full resolution with one sample per pixel, then the supersampled final picture.
-// A newer edit cancels the running render, so a slider drag keeps showing fresh previews.
-void MainWindow::renderFaces() {
-  if (!hasDocument_) return;
-  if (document_->log()) {  // the board cut from the log (main_window_log.cpp)
-    renderBoardFaces();
-    return;
-  }
-  renderFacesOf(document_->model());
-}
-
-void MainWindow::renderFacesOf(std::shared_ptr<const WoodModel> model) {
-  const RenderSettings settings = settings_;
-  if (renderJob_ && jobs_->isRunning(renderJob_)) jobs_->cancel(renderJob_);
-  renderJob_ = jobs_->start(
-      tr("Rendering faces"),
-      [model, settings](const Progress& progress, const JobRunner::Preview& preview) -> QVariant {
-        const auto stage = [&](float pxPerMm, int samples, const Progress& stageProgress) {
-          RenderedFaces faces = renderModelFaces(*model, RenderSettings{pxPerMm, samples}, stageProgress);
-          if (faces.cancelled) throw Cancelled();
-          if (!faces.error.isEmpty()) throw InputError(faces.error.toStdString());
-          return faces.faces;
-        };
-        const Progress quiet{nullptr, progress.stop};
-        preview(QVariant::fromValue(stage(settings.pxPerMm / 4.0f, 1, quiet)));
-        if (settings.samples > 1) preview(QVariant::fromValue(stage(settings.pxPerMm, 1, quiet)));
-        return QVariant::fromValue(stage(settings.pxPerMm, settings.samples, progress));
-      },
-      [this](const QVariant& result) {
-        renderings_ = result.value<std::array<QImage, 6>>();
-        updateFacesView();
-        emit facesRendered();
-        if (documentReadyPending_) {
-          documentReadyPending_ = false;
-          emit documentReady();
-        }
-      },
-      [this](const QVariant& preview) {
-        renderings_ = preview.value<std::array<QImage, 6>>();
-        updateFacesView();
-        emit facesPreviewed();
-      },
-      false);
-}
-
-void MainWindow::updateFacesView() {
-  facesView_->setRenderings(renderings_);
-  const bool photos = document_->hasPhotos() && !document_->log();  // a log's board has no photos
-  if (!displayChosenByUser_) displayMode_ = photos ? 0 : 1;
-  if (!photos && displayMode_ != 1) displayMode_ = 1;  // nothing to show or blend but the model
-  for (QAction* action : displayGroup_->actions()) {
-    action->setChecked(action->data().toInt() == displayMode_);
-    action->setEnabled(photos || action->data().toInt() == 1);
-  }
-  facesView_->setDisplay(static_cast<FaceDisplay>(displayMode_));
-  updateFaceSlider();
-  toggleViewAction_->setEnabled(photos);
-  toggleViewAction_->setText(showingPhotos() ? tr("Show &Model Rendering") : tr("Show &Photos"));
-  const QString shortcut = toggleViewAction_->shortcut().toString(QKeySequence::NativeText);
-  static const QString titles[] = {tr("Photos"), tr("Model rendering"), tr("Model over photos"),
-                                   tr("Photo | model"), tr("Model against photo")};
-  static_assert(std::size(titles) == kFaceDisplayCount);
-  const QString toggle = photos ? tr("%1: photos / model").arg(shortcut) : QString();
-  const bool split = displayMode_ == static_cast<int>(FaceDisplay::Split);
-  facesView_->setCaption(hasDocument_ ? titles[displayMode_] : QString(),
-                         split ? tr("drag the line · %1").arg(toggle) : toggle);
-}
-
-// One slider, two meanings: the model's opacity in Blend, the photo | model line in Split.
-void MainWindow::updateFaceSlider() {
-  const bool split = displayMode_ == static_cast<int>(FaceDisplay::Split);
-  const QSignalBlocker blocker(blendSlider_);
-  blendSlider_->setEnabled(split || displayMode_ == static_cast<int>(FaceDisplay::Blend));
-  blendSlider_->setValue(static_cast<int>(
-      std::lround(100 * (split ? facesView_->splitPosition() : facesView_->blendOpacity()))));
-  const QString tip = split ? tr("Where the line between photo (left) and model (right) crosses the faces")
-                            : tr("Opacity of the model over the photos in Blend mode");
-  blendSlider_->setToolTip(tip);
-}
-
 QList<QAction*> MainWindow::faceDisplayActions() const {
   return displayGroup_->actions();
-}
-
-void MainWindow::setFaceDisplay(int display) {
-  displayMode_ = display;
-  updateFacesView();
-}
-
-void MainWindow::toggleView() {
-  displayChosenByUser_ = true;
-  setFaceDisplay(showingPhotos() ? 1 : 0);
 }
 
 void MainWindow::applyPreset(const QString& presetId) {
@@ -379,26 +265,15 @@ void MainWindow::applyPreset(const QString& presetId) {
   }
 }
 
-void MainWindow::dropPhoto(FaceId face, const QString& path) {
-  jobs_->start(
-      tr("Loading photo"),
-      [path](const Progress&, const JobRunner::Preview&) -> QVariant {
-        const QImage image = toQImage(readImage(path.toStdString()));
-        return image;
-      },
-      [this, face, path](const QVariant& image) {
-        document_->replacePhoto(face, QFileInfo(path).absoluteFilePath(), image.value<QImage>());
-        logMessage("info",
-                   tr("Face %1: photo %2").arg(QChar(faceLetter(face))).arg(QFileInfo(path).fileName()));
-      },
-      {}, false);
+void MainWindow::showError(const QString& message) {
+  logMessage("error", message);
+  showAlert(message, message);
 }
 
-void MainWindow::showError(const QString& message) {
-  lastError_ = message;
-  logMessage("error", message);
+void MainWindow::showAlert(const QString& text, const QString& error) {
+  lastError_ = error;
   // open() is window-modal but returns at once: the GUI thread never blocks on the user.
-  auto* box = new QMessageBox(QMessageBox::Warning, tr("Kerf"), message, QMessageBox::Ok, this);
+  auto* box = new QMessageBox(QMessageBox::Warning, tr("Kerf"), text, QMessageBox::Ok, this);
   box->setAttribute(Qt::WA_DeleteOnClose);
   box->open();
 }
@@ -409,10 +284,10 @@ void MainWindow::logMessage(const QString& level, const QString& text) {
 }
 
 void MainWindow::updateTitle() {
-  const QString name = hasDocument_ ? document_->name() : tr("No document");
+  const QString name = hasDocument() ? document_->name() : tr("No document");
   setWindowTitle(tr("%1[*] — Kerf").arg(name));
   setWindowModified(document_->isModified());
-  if (!hasDocument_) {
+  if (!hasDocument()) {
     documentLabel_->setText(tr("No document"));
     return;
   }
@@ -427,12 +302,12 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (!maybeSave()) {
+  if (!files_->maybeSave()) {
     event->ignore();
     return;
   }
-  autosave_->discardCurrent();  // closed on purpose: nothing to recover
-  jobs_->cancelAll();           // fits, renders and exports stop now; an export leaves no file
+  files_->autosave()->discardCurrent();  // closed on purpose: nothing to recover
+  jobs_->cancelAll();                    // fits, renders and exports stop now; an export leaves no file
   event->accept();
 }
 

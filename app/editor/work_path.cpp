@@ -43,20 +43,20 @@ QString stageName(ReconstructStage stage) {
 
 WorkPath::WorkPath(MainWindow* window, QStackedWidget* facesStack)
     : QObject(window), window_(window), facesStack_(facesStack) {
-  startPage_ = new StartPage(window_->recent_, facesStack_);
+  startPage_ = new StartPage(window_->files()->recentFiles(), facesStack_);
   facesStack_->insertWidget(0, startPage_);
   facesStack_->setCurrentWidget(startPage_);
   connect(startPage_, &StartPage::openPhotosRequested, this, [this] { openPhotos(); });
-  connect(startPage_, &StartPage::openProjectRequested, window_, &MainWindow::chooseDocument);
+  connect(startPage_, &StartPage::openProjectRequested, window_->files(), &FilesController::chooseDocument);
   connect(startPage_, &StartPage::demoRequested, window_, [this] { window_->openDemo(defaultDemoFolder()); });
-  connect(startPage_, &StartPage::recentRequested, window_, &MainWindow::openDocument);
+  connect(startPage_, &StartPage::recentRequested, window_->files(), &FilesController::openDocument);
 
   openPhotosAction_ = new QAction(tr("Open &Photos…"), this);
   openPhotosAction_->setToolTip(
       tr("Open a folder of photos of the block's faces (A_col.png .. F_col.png); the 3D block shows them "
          "until the wood is reconstructed"));
   connect(openPhotosAction_, &QAction::triggered, this, [this] {
-    if (window_->maybeSave()) openPhotos();
+    if (window_->files()->maybeSave()) openPhotos();
   });
   reconstructAction_ = new QAction(tr("&Reconstruct"), this);
   reconstructAction_->setObjectName(QStringLiteral("reconstructAction"));
@@ -109,7 +109,7 @@ WorkPath::WorkPath(MainWindow* window, QStackedWidget* facesStack)
     showPhotosOnBlock(false);
     updateFitLabel();
   });
-  connect(window_->showPhotosOn3dAction_, &QAction::triggered, this, [this] { photosOnBlockByUs_ = false; });
+  connect(window_->showPhotosOn3dAction(), &QAction::triggered, this, [this] { photosOnBlockByUs_ = false; });
   connect(window_->jobs(), &JobRunner::jobFailed, this, &WorkPath::ended);
   connect(window_->jobs(), &JobRunner::jobProgress, this, [this](int id, double fraction) {
     if (id == job_) showStage(fraction);
@@ -142,16 +142,16 @@ void WorkPath::documentOpened(const QString& path) {
   const bool photosWithoutModel =
       QFileInfo(path).isDir() && document->hasPhotos() && !document->project().rates && !document->log();
   photosOnBlockByUs_ = false;
-  window_->showPhotosOn3dAction_->setChecked(photosWithoutModel);
+  window_->showPhotosOn3dAction()->setChecked(photosWithoutModel);
   photosOnBlockByUs_ = photosWithoutModel;
 }
 
 void WorkPath::showPhotosOnBlock(bool on) {
   if (on) {
-    if (!window_->showPhotosOn3dAction_->isChecked()) photosOnBlockByUs_ = true;
-    window_->showPhotosOn3dAction_->setChecked(true);
+    if (!window_->showPhotosOn3dAction()->isChecked()) photosOnBlockByUs_ = true;
+    window_->showPhotosOn3dAction()->setChecked(true);
   } else if (photosOnBlockByUs_) {
-    window_->showPhotosOn3dAction_->setChecked(false);
+    window_->showPhotosOn3dAction()->setChecked(false);
     photosOnBlockByUs_ = false;
   }
 }
@@ -177,7 +177,7 @@ void WorkPath::showStage(double fraction) {
 }
 
 void WorkPath::updateFitLabel() {
-  const auto& fit = window_->lastFit_;
+  const auto fit = window_->rings()->lastFit();
   if (!fit || !window_->document()->project().rates) {
     fitLabel_->clear();
     fitLabel_->setToolTip({});
@@ -208,11 +208,10 @@ void WorkPath::reconstruct() {
     return;
   }
   JobRunner* jobs = window_->jobs();
-  for (int other : {window_->ringJob_, window_->fitJob_, window_->textureJob_})
-    if (other && jobs->isRunning(other)) {
-      refuse(tr("Other ring or texture work is still running; reconstruct when it has finished."));
-      return;
-    }
+  if (window_->rings()->isBusy() || window_->texture()->isRunning()) {
+    refuse(tr("Other ring or texture work is still running; reconstruct when it has finished."));
+    return;
+  }
   ReconstructInput input;
   const Project& project = document->project();
   input.block = project.block;
@@ -220,7 +219,7 @@ void WorkPath::reconstruct() {
   input.photos = document->photos();
   input.heldOut = project.heldOutFaces;
   input.annotations = project.annotations;
-  input.appearance = window_->textureOptions_;
+  input.appearance = window_->texture()->textureOptions();
   input.inferAppearance = inferAppearance_;
   window_->logMessage("info", tr("Reconstructing the wood from the face photos"));
   job_ = jobs->start(
@@ -248,26 +247,25 @@ void WorkPath::onEvent(const ReconstructEvent& event) {
     return;
   }
   if (event.rings) {  // the rings over the faces' photos
-    window_->showRingDetection(event.rings);
+    window_->rings()->showRingDetection(event.rings);
     emit stageLanded(ReconstructStage::Rings);
   } else if (event.fieldPreview) {  // the field as it is being fitted: on the block and the cut
     showPhotosOnBlock(false);
-    window_->showFitPreview(event.fieldPreview->first, event.fieldPreview->second);
+    window_->rings()->showFitPreview(event.fieldPreview->first, event.fieldPreview->second);
   } else if (event.field) {
-    if (!window_->applyFit(event.field)) {
+    if (!window_->rings()->applyFit(event.field)) {
       cancel();
       return;
     }
     // The faces compare photo and model, unless the user chose what they show.
-    if (!window_->displayChosenByUser_) {
-      window_->displayChosenByUser_ = true;  // it stays so until the user, or the next document, changes it
-      window_->setFaceDisplay(static_cast<int>(FaceDisplay::Split));
-    }
+    // It stays so until the user, or the next document, changes it.
+    if (!window_->faces()->displayChosenByUser())
+      window_->faces()->chooseDisplay(static_cast<int>(FaceDisplay::Split));
     emit stageLanded(ReconstructStage::Field);
   } else if (event.appearancePreview) {
-    window_->showTexturePreview(*event.appearancePreview);
+    window_->texture()->showTexturePreview(*event.appearancePreview);
   } else if (event.appearance) {
-    if (!window_->applyTexture(event.appearance)) {
+    if (!window_->texture()->applyTexture(event.appearance)) {
       cancel();
       return;
     }
@@ -292,7 +290,8 @@ void WorkPath::ended(int id, const QString& message) {
   if (id != job_) return;
   job_ = 0;
   updateFitLabel();
-  window_->modelChanged();  // back from a preview to the document's wood (what had landed stays)
+  window_->faces()
+      ->showDocumentModel();  // back from a preview to the document's wood (what had landed stays)
   updateActions();
   if (!message.isEmpty()) window_->showError(tr("Reconstruct stopped: %1").arg(message));
   emit reconstructFailed(message.isEmpty() ? tr("cancelled") : message);

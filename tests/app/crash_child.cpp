@@ -53,16 +53,16 @@ int main(int argc, char** argv) {
       window.document()->editParameter(ring, {5.5f, 0, 0}, true);
       window.autosave()->saveNow();
       say("autosaved");
-      window.detectRings();
+      window.rings()->detectRings();
     } else if (mode == "export" && argc == 4) {
       ExportRequest request;
       request.out = argv[3];
       request.quantity = VolumeQuantity::Color;
       request.resolution = 320;
-      window.startExport(request);
+      window.exports()->startExport(request);
       say("exporting");
     } else {
-      window.openRandomLog(7);
+      window.logBoard()->openRandomLog(7);
     }
   });
   QObject::connect(&window, &MainWindow::logOpened, [&] {
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     }
   });
   QObject::connect(&window, &MainWindow::ringsDetected, [&] {
-    window.fitGrowthField();
+    window.rings()->fitGrowthField();
     say("fitting");
   });
   QObject::connect(&window, &MainWindow::growthFieldFitted, [] { say("fitted"); });

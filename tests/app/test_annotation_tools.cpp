@@ -349,7 +349,7 @@ void TestAnnotationTools::savesAndReopensTheAnnotations() {
 
   // And the export in the Mokume format: the numbered trace and the knot.
   const QString folder = dir_.filePath("mokume");
-  QVERIFY(window_->exportAnnotations(folder));
+  QVERIFY(window_->rings()->exportAnnotations(folder));
   QVERIFY(QFileInfo::exists(folder + "/A_ann.png"));
   QVERIFY(QFileInfo::exists(folder + "/C_knot.png"));
   QVERIFY(QFileInfo::exists(folder + "/F_knot.png"));

@@ -48,7 +48,7 @@ void TestExportDialog::initTestCase() {
 }
 
 void TestExportDialog::faceImageThroughTheDialog() {
-  ExportDialog* dialog = window_->showExportDialog(ExportDialog::Kind::FaceImage);
+  ExportDialog* dialog = window_->exports()->showExportDialog(ExportDialog::Kind::FaceImage);
   QVERIFY(dialog->isVisible());
   const QString path = dir_.filePath("face_A.exr");
   dialog->setPath(path);
@@ -78,7 +78,7 @@ void TestExportDialog::faceImageThroughTheDialog() {
 }
 
 void TestExportDialog::dialogRefusesAMismatchedExtension() {
-  ExportDialog* dialog = window_->showExportDialog(ExportDialog::Kind::CutImage);
+  ExportDialog* dialog = window_->exports()->showExportDialog(ExportDialog::Kind::CutImage);
   dialog->setPath(dir_.filePath("cut.nrrd"));  // a volume extension for an image
   dialog->accept();
   QVERIFY(dialog->isVisible());
@@ -91,7 +91,7 @@ void TestExportDialog::dialogRefusesAMismatchedExtension() {
 }
 
 void TestExportDialog::depthStackThroughTheDialog() {
-  ExportDialog* dialog = window_->showExportDialog(ExportDialog::Kind::DepthStack);
+  ExportDialog* dialog = window_->exports()->showExportDialog(ExportDialog::Kind::DepthStack);
   const QString folder = dir_.filePath("stack");
   dialog->setPath(folder);
   dialog->setPxPerMm(1.0);
@@ -107,7 +107,7 @@ void TestExportDialog::depthStackThroughTheDialog() {
 }
 
 void TestExportDialog::tooLargeAnImageIsRefusedAndSaidAtOnce() {
-  ExportDialog* dialog = window_->showExportDialog(ExportDialog::Kind::FaceImage);
+  ExportDialog* dialog = window_->exports()->showExportDialog(ExportDialog::Kind::FaceImage);
   dialog->setPath(dir_.filePath("huge_A.tif"));
   dialog->setPxPerMm(10.0);
   QVERIFY2(dialog->sizeNote().startsWith("400 × 400 px"), qPrintable(dialog->sizeNote()));
@@ -130,7 +130,7 @@ void TestExportDialog::failedExportIsReported() {
   request.out = dir_.filePath("missing-folder/growth.vdb").toStdString();
   request.resolution = 8;
   QSignalSpy failed(window_.get(), &MainWindow::exportFailed);
-  window_->startExport(request);
+  window_->exports()->startExport(request);
   QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, kTimeoutMs);
   QVERIFY2(failed.at(0).at(0).toString().contains("does not exist"),
            qPrintable(failed.at(0).at(0).toString()));

@@ -76,7 +76,7 @@ void TestFirstHour::initTestCase() {
   window_ = std::make_unique<MainWindow>(RenderSettings{6.4f, 1});  // 256 px faces, as CN03's photos
   window_->setAskBeforeDiscarding(false);
   // A short appearance stage (still a real inference with previews); the core's defaults take minutes.
-  window_->setTextureOptions(testing::quickTextureOptions());
+  window_->texture()->setTextureOptions(testing::quickTextureOptions());
   window_->resize(1366, 768);
   window_->show();
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));

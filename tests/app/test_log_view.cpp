@@ -85,7 +85,7 @@ void TestLogView::initTestCase() {
 void TestLogView::opensRandomLogAsDocument() {
   QSignalSpy ready(window_.get(), &MainWindow::documentReady);
   QVERIFY(!window_->hasDocument());
-  window_->openRandomLog(7);
+  window_->logBoard()->openRandomLog(7);
   QVERIFY(window_->hasDocument());
   QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
   QVERIFY(document()->log().has_value());
@@ -219,7 +219,7 @@ void TestLogView::savesAndReopensProjectWithLog() {
   const QString path = dir_.filePath("with_log.kerf");
   QVERIFY(window_->saveAs(path));
   const QString logPath = dir_.filePath("the.kerflog");
-  QVERIFY(window_->saveLogAs(logPath));
+  QVERIFY(window_->logBoard()->saveLogAs(logPath));
   const LogModel alone = loadLogFile(logPath.toStdString());
   QCOMPARE(alone.knots.size(), saved.log.knots.size());
 
@@ -245,7 +245,7 @@ void TestLogView::savesAndReopensProjectWithLog() {
 void TestLogView::closesLogAsUndoStep() {
   const ProjectLog before = log();
   QSignalSpy rendered(window_.get(), &MainWindow::facesRendered);
-  window_->closeLog();
+  window_->logBoard()->closeLog();
   QVERIFY(!document()->log().has_value());
   QVERIFY(!window_->logView()->log());
   QVERIFY(waitForFaces(rendered));

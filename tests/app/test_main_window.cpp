@@ -366,7 +366,7 @@ void TestMainWindow::detectsRingsAndShowsContours() {
   window_->openDocument(project);
   QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
   QVERIFY(window_->showingPhotos());
-  QVERIFY(!window_->ringDetection());
+  QVERIFY(!window_->rings()->ringDetection());
   QVERIFY(!window_->showContoursAction()->isEnabled());
 
   QSignalSpy detected(window_.get(), &MainWindow::ringsDetected);
@@ -375,7 +375,7 @@ void TestMainWindow::detectsRingsAndShowsContours() {
   QVERIFY(window_->isBusy());  // a background job
   QTRY_VERIFY_WITH_TIMEOUT(detected.count() + failed.count() > 0, kTimeoutMs);
   QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
-  const auto detection = window_->ringDetection();
+  const auto detection = window_->rings()->ringDetection();
   QVERIFY(detection);
   QCOMPARE(detection->facesDetected, 6);
   int facesWithContours = 0;
@@ -418,7 +418,7 @@ void TestMainWindow::detectsRingsAndShowsContours() {
 // Rings ▸ Fit Growth Field on the detected rings: the growth parameters and rates change in one undo
 // step, and undo restores both.
 void TestMainWindow::fitsGrowthFieldAsOneUndoStep() {
-  QVERIFY(window_->ringDetection());
+  QVERIFY(window_->rings()->ringDetection());
   Document* document = window_->document();
   const WoodParameters before = document->project().params;
   const bool hadRates = document->project().rates.has_value();
@@ -477,7 +477,7 @@ void TestMainWindow::fitsGrowthFieldAsOneUndoStep() {
   QCOMPARE(document->project().rates.has_value(), hadRates);
   window_->redoAction()->trigger();
   QVERIFY(document->project().params == after);
-  QVERIFY(window_->ringDetection());  // the detection stays with the photos
+  QVERIFY(window_->rings()->ringDetection());  // the detection stays with the photos
 }
 
 void TestMainWindow::savesScreenshot() {

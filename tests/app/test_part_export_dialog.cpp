@@ -48,7 +48,7 @@ class TestPartExportDialog : public QObject {
     view->refineNow();
     const QImage before = view->grabFramebuffer();
 
-    PartExportDialog* dialog = window_->showPartExportDialog();
+    PartExportDialog* dialog = window_->exports()->showPartExportDialog();
     QVERIFY(dialog->isVisible());
     QVERIFY(!view->showsPart());
     QVERIFY(dialog->fitText().startsWith("Choose a mesh"));
@@ -102,7 +102,7 @@ class TestPartExportDialog : public QObject {
   }
 
   void glbWhenTheFormatIsChosen() {
-    PartExportDialog* dialog = window_->showPartExportDialog();
+    PartExportDialog* dialog = window_->exports()->showPartExportDialog();
     dialog->setMeshPath(writeBox(dir_.filePath("box2.obj")));
     dialog->setPath(dir_.filePath("part2.obj"));
     auto* format = dialog->findChild<QComboBox*>();

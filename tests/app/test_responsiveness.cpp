@@ -142,7 +142,7 @@ void TestResponsiveness::fitAndExportKeepTheEventLoopResponsive() {
   StallProbe probe;
   probe.start();
   window->fitGrowthAction()->trigger();
-  window->startExport(request);
+  window->exports()->startExport(request);
   QVERIFY(window->isBusy());
   QTRY_VERIFY_WITH_TIMEOUT(
       fitted.count() + ringFailed.count() > 0 && exported.count() + exportFailed.count() > 0, 4 * kTimeoutMs);
@@ -172,7 +172,7 @@ void TestResponsiveness::detectionAndTextureInferenceKeepTheEventLoopResponsive(
   QVERIFY2(probe.longestMs() < kMaxStallMs,
            qPrintable(QString("the event loop stalled for %1 ms during detection").arg(probe.longestMs())));
 
-  window->setTextureOptions(kerf::testing::quickTextureOptions());
+  window->texture()->setTextureOptions(kerf::testing::quickTextureOptions());
   QSignalSpy inferred(window.get(), &MainWindow::textureInferred);
   QSignalSpy previewed(window.get(), &MainWindow::texturePreviewed);
   QSignalSpy textureFailed(window.get(), &MainWindow::textureJobFailed);
@@ -206,7 +206,7 @@ void TestResponsiveness::photoImportKeepsTheEventLoopResponsive() {
   QSignalSpy imported(window.get(), &MainWindow::photosImported);
   StallProbe probe;
   probe.start();
-  window->importPhotos(files);
+  window->files()->importPhotos(files);
   auto* dialog = window->findChild<PhotoImportDialog*>();
   QVERIFY(dialog);
   dialog->setAskBeforeReplacing(false);
@@ -246,7 +246,7 @@ void TestResponsiveness::closingDuringAJobCancelsIt() {
   QSignalSpy fitted(window.get(), &MainWindow::growthFieldFitted);
   const WoodParameters before = window->document()->project().params;
   window->fitGrowthAction()->trigger();
-  const int id = window->startExport(request);
+  const int id = window->exports()->startExport(request);
   QTRY_VERIFY_WITH_TIMEOUT(window->jobs()->progressOf(id) > 0.0, kTimeoutMs);  // both under way
   QCOMPARE(window->jobs()->runningJobs().size(), 2);
 

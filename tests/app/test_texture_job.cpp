@@ -44,7 +44,7 @@ void TestTextureJob::initTestCase() {
   project_ = QString::fromStdString(writeDemo(dir_.filePath("demo").toStdString(), options).project.string());
   window_ = std::make_unique<MainWindow>(RenderSettings{3.2f, 1});  // 128 px faces, like the photos
   window_->setAskBeforeDiscarding(false);
-  window_->setTextureOptions(kerf::testing::quickTextureOptions());
+  window_->texture()->setTextureOptions(kerf::testing::quickTextureOptions());
   window_->show();
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
 }

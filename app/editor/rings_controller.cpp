@@ -1,78 +1,63 @@
-// MainWindow: the Rings menu (ring detection on the face photos, growth-field fit).
+// RingsController: ring detection on the face photos, the growth-field fit and its pith candidates.
+#include "rings_controller.hpp"
+
 #include <QAction>
 #include <QColor>
 #include <QFileInfo>
-#include <QMenu>
-#include <QMenuBar>
-#include <QMessageBox>
 #include <QPolygonF>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
-#include <cmath>
 #include "annotation_layer.hpp"
-#include "cut_view.hpp"
 #include "document.hpp"
+#include "faces_controller.hpp"
 #include "faces_view.hpp"
 #include "job_runner.hpp"
-#include "main_window.hpp"
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
-#include "viewport3d.hpp"
 
 namespace kerf {
 
-void MainWindow::createRingsMenu() {
-  QMenu* rings = menuBar()->addMenu(tr("&Rings"));
-  rings->setObjectName("ringsMenu");
-  rings->setToolTipsVisible(true);
-  detectRingsAction_ = rings->addAction(tr("&Detect Rings"), this, &MainWindow::detectRings);
-  detectRingsAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
-  detectRingsAction_->setToolTip(
-      tr("Find the annual rings on every face photo (classical detector) and add them as ring traces you can "
-         "correct (they replace the previously detected ones; your own traces stay); runs in the background "
-         "(Esc cancels)"));
-  fitGrowthAction_ = rings->addAction(tr("&Fit Growth Field"), this, &MainWindow::fitGrowthField);
-  fitGrowthAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
-  fitGrowthAction_->setToolTip(
-      tr("Fit the pith axis, ring width, growth rates and wood colours to your ring traces (detected and "
-         "corrected, numbered ones keep their years) and the ring images, as kerf-cli fit does; the faces "
-         "and the 3D view follow the fit live; one undo step"));
-  otherPithAction_ =
-      rings->addAction(tr("Use &Other Pith Candidate"), this, &MainWindow::useOtherPithCandidate);
-  otherPithAction_->setEnabled(false);
-  otherPithAction_->setToolTip(
-      tr("When the rings on the faces are nearly parallel, the pith could lie on either side of the block "
-         "(Mokume B.1): switch to the field fitted around the other side (one undo step; again to switch "
-         "back)"));
-  showResidualsAction_ = rings->addAction(tr("Show Fit &Residuals"));
-  showResidualsAction_->setCheckable(true);
-  showResidualsAction_->setChecked(true);
-  showResidualsAction_->setEnabled(false);
-  showResidualsAction_->setToolTip(
-      tr("Colour every fitted ring line by how well the fitted rings follow it: green within 3 % of a ring "
-         "width, yellow about 10 %, red 20 % or more (a wrong or broken trace)"));
-  connect(showResidualsAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
-  rings->addSeparator();
-  rings->addAction(showContoursAction_);
-  rings->addAction(exportAnnotationsAction_);
-  QMenu* tracing = rings->addMenu(tr("&Tracing Tools"));  // the faces view's tool bar, with their keys
-  tracing->setToolTipsVisible(true);
-  tracing->addActions(annotationLayer_->toolActions());
-  tracing->addSeparator();
-  tracing->addActions(annotationLayer_->editActions());
-  connect(jobs_, &JobRunner::jobFailed, this, &MainWindow::ringJobEnded);
+RingsController::RingsController(const EditorContext& context, FacesController* faces, FacesView* facesView,
+                                 AnnotationLayer* annotationLayer)
+    : EditorController(context), faces_(faces), facesView_(facesView), annotationLayer_(annotationLayer) {
+  connect(annotationLayer_, &AnnotationLayer::edited, this,
+          [this](const Annotations& after, const QString& text) { document_->editAnnotations(after, text); });
+  connect(document_, &Document::annotationsChanged, this, &RingsController::annotationsChanged);
+  // The detection belonged to the photos that were there.
+  connect(document_, &Document::photosChanged, this, &RingsController::clearRingDetection);
+  connect(jobs_, &JobRunner::jobFailed, this, &RingsController::ringJobEnded);
   connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { ringJobEnded(id, {}); });
 }
 
-void MainWindow::clearRingDetection() {
+void RingsController::setActions(const Actions& actions) {
+  actions_ = actions;
+  connect(actions_.otherPith, &QAction::triggered, this, &RingsController::useOtherPithCandidate);
+  connect(actions_.exportAnnotations, &QAction::triggered, this, [this] { exportAnnotations(); });
+}
+
+bool RingsController::isBusy() const {
+  return (ringJob_ && jobs_->isRunning(ringJob_)) || isFitting();
+}
+
+bool RingsController::isFitting() const {
+  return fitJob_ && jobs_->isRunning(fitJob_);
+}
+
+void RingsController::fail(const QString& message) {
+  showError(message);
+  emit ringJobFailed(message);
+}
+
+void RingsController::clearRingDetection() {
   if (ringJob_ && jobs_->isRunning(ringJob_)) jobs_->cancel(ringJob_);
   ringDetection_.reset();
   facesView_->clearOverlay();
-  if (showContoursAction_) showContoursAction_->setEnabled(!document_->annotations().empty());
+  if (actions_.showContours) actions_.showContours->setEnabled(!document_->annotations().empty());
 }
 
-void MainWindow::ringJobEnded(int id, const QString& message) {
+void RingsController::ringJobEnded(int id, const QString& message) {
   if (id != ringJob_ && id != fitJob_) return;
   const bool fit = id == fitJob_;
   (id == ringJob_ ? ringJob_ : fitJob_) = 0;
@@ -80,22 +65,18 @@ void MainWindow::ringJobEnded(int id, const QString& message) {
     emit ringJobFailed(tr("cancelled"));
     return;
   }
-  lastError_ = message;  // the runner has logged the error; say it where it is seen
-  auto* box = new QMessageBox(
-      QMessageBox::Warning, tr("Kerf"),
+  // The runner has logged the error; say it where it is seen.
+  emit alerted(
       (fit ? tr("The growth field could not be fitted: %1") : tr("Ring detection failed: %1")).arg(message),
-      QMessageBox::Ok, this);
-  box->setAttribute(Qt::WA_DeleteOnClose);
-  box->open();
+      message);
   emit ringJobFailed(message);
 }
 
-void MainWindow::detectRings() {
-  if (!hasDocument_ || !document_->hasPhotos()) {
-    showError(
+void RingsController::detectRings() {
+  if (!faces_->hasDocument() || !document_->hasPhotos()) {
+    fail(
         tr("Detect Rings needs photos of the faces: open a sample folder (A_col.png .. F_col.png) or "
            "drop photos on the faces."));
-    emit ringJobFailed(lastError_);
     return;
   }
   if (ringJob_ && jobs_->isRunning(ringJob_)) return;  // already under way
@@ -116,11 +97,11 @@ void MainWindow::detectRings() {
 }
 
 // A detection that has landed: kept with the window, its contours the document's detected ring traces.
-void MainWindow::showRingDetection(std::shared_ptr<const RingDetection> detection) {
+void RingsController::showRingDetection(std::shared_ptr<const RingDetection> detection) {
   ringDetection_ = std::move(detection);
   applyDetectedTraces(*ringDetection_);  // editable traces of the document: one undo step
-  showContoursAction_->setEnabled(true);
-  facesView_->setOverlayVisible(showContoursAction_->isChecked());
+  actions_.showContours->setEnabled(true);
+  facesView_->setOverlayVisible(actions_.showContours->isChecked());
   QStringList counts;
   double seconds = 0;
   for (FaceId face : kAllFaces) {
@@ -129,24 +110,22 @@ void MainWindow::showRingDetection(std::shared_ptr<const RingDetection> detectio
     counts << QStringLiteral("%1 %2").arg(QChar(faceLetter(face))).arg(ringDetection_->contours[i].size());
     seconds += ringDetection_->seconds[i];
   }
-  logMessage("info", tr("Rings detected on %1 faces: %2 contours (%3), %4 s")
-                         .arg(ringDetection_->facesDetected)
-                         .arg(ringDetection_->contourCount())
-                         .arg(counts.join(", "))
-                         .arg(seconds, 0, 'f', 2));
+  log("info", tr("Rings detected on %1 faces: %2 contours (%3), %4 s")
+                  .arg(ringDetection_->facesDetected)
+                  .arg(ringDetection_->contourCount())
+                  .arg(counts.join(", "))
+                  .arg(seconds, 0, 'f', 2));
   emit ringsDetected();
 }
 
-void MainWindow::fitGrowthField() {
-  if (!hasDocument_) {
-    showError(tr("Open a document first."));
-    emit ringJobFailed(lastError_);
+void RingsController::fitGrowthField() {
+  if (!faces_->hasDocument()) {
+    fail(tr("Open a document first."));
     return;
   }
   if (fitJob_ && jobs_->isRunning(fitJob_)) return;
   if (ringJob_ && jobs_->isRunning(ringJob_)) {
-    showError(tr("Ring detection is still running; fit the growth field when it has finished."));
-    emit ringJobFailed(lastError_);
+    fail(tr("Ring detection is still running; fit the growth field when it has finished."));
     return;
   }
   // The detected images, else the sample folder's own ring-localization images (read in the job); the
@@ -160,19 +139,18 @@ void MainWindow::fitGrowthField() {
   for (const auto& photo : document_->project().facePhotos)
     if (folder.empty() && !photo.empty()) folder = photo.parent_path();
   if (!detection && folder.empty() && traces.empty()) {
-    showError(
+    fail(
         tr("There are no rings to fit: run Rings ▸ Detect Rings on the face photos, or trace rings, first."));
-    emit ringJobFailed(lastError_);
     return;
   }
   const Block block = document_->project().block;
   const WoodParameters current = document_->project().params;
   const std::array<QImage, 6> photos = document_->photos();   // for the anatomical prior and the colours
   const FaceSet heldOut = document_->project().heldOutFaces;  // the fit uses nothing of these faces
-  logMessage("info", !traces.empty() ? tr("Fitting the growth field to %1 ring traces").arg(traces.size())
-                     : detection     ? tr("Fitting the growth field to the detected rings")
-                                     : tr("Fitting the growth field to the ring images in %1")
-                                       .arg(QString::fromStdString(folder.string())));
+  log("info", !traces.empty() ? tr("Fitting the growth field to %1 ring traces").arg(traces.size())
+              : detection     ? tr("Fitting the growth field to the detected rings")
+                              : tr("Fitting the growth field to the ring images in %1")
+                                .arg(QString::fromStdString(folder.string())));
   fitJob_ = jobs_->start(
       tr("Fitting growth field"),
       [detection, folder, block, current, photos, traces, knotMarks, heldOut](
@@ -206,47 +184,46 @@ void MainWindow::fitGrowthField() {
 }
 
 // A fit that has landed: applied as one undo step, its residuals drawn over the faces, its quality said.
-bool MainWindow::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
+bool RingsController::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
   for (const ReportLine& line : fit->report)
-    logMessage(severityName(line.severity), QString::fromStdString(line.text));
+    log(severityName(line.severity), QString::fromStdString(line.text));
   try {
     document_->applyGrowthField(fit->params, fit->rates, tr("Fit growth field"), fit->knots);
   } catch (const InputError& e) {
-    showError(tr("The fitted growth field is not valid: %1").arg(QString::fromUtf8(e.what())));
-    modelChanged();  // back from the preview to the document's field
-    emit ringJobFailed(lastError_);
+    const QString message = tr("The fitted growth field is not valid: %1").arg(QString::fromUtf8(e.what()));
+    showError(message);
+    faces_->showDocumentModel();  // back from the preview to the document's field
+    emit ringJobFailed(message);
     return false;
   }
   lastFit_ = fit;
-  otherPithAction_->setEnabled(fit->alternative.has_value());
+  actions_.otherPith->setEnabled(fit->alternative.has_value());
   showFitResiduals(*fit);
-  logMessage(fit->ambiguous ? "warning" : "info",
-             tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
-                 .arg(fit->lossRings, 0, 'f', 4)
-                 .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
-                                                              "Other Pith Candidate shows the other side")
-                                                         : tr("; the pith side is ambiguous"))
-                                     : QString()));
+  log(fit->ambiguous ? "warning" : "info",
+      tr("Growth field fitted: iso-contour loss %1 ring spacings%2 (Ctrl+Z undoes it)")
+          .arg(fit->lossRings, 0, 'f', 4)
+          .arg(fit->ambiguous ? (fit->alternative ? tr("; the pith side is ambiguous: Rings ▸ Use "
+                                                       "Other Pith Candidate shows the other side")
+                                                  : tr("; the pith side is ambiguous"))
+                              : QString()));
   emit growthFieldFitted();
   return true;
 }
 
 // The field being fitted, shown in the 3D view, the cut and the faces before it is applied.
-void MainWindow::showFitPreview(const WoodParameters& params, const GrowthRates& rates) {
+void RingsController::showFitPreview(const WoodParameters& params, const GrowthRates& rates) {
   std::shared_ptr<const WoodModel> model;
   try {
     model = std::make_shared<const WoodModel>(document_->project().block, params, rates);
   } catch (const InputError&) {
     return;  // e.g. a pith candidate outside the ranges: nothing to preview
   }
-  viewport_->setModel(model);
-  cutView_->setModel(model);
-  renderFacesOf(model);
+  faces_->showPreview(model);
   emit fitPreviewed();
 }
 
 // Every fitted contour over the photos, coloured by its residual (ring spacings).
-void MainWindow::showFitResiduals(const GrowthFitResult& fit) {
+void RingsController::showFitResiduals(const GrowthFitResult& fit) {
   const Block& block = document_->project().block;
   std::array<std::vector<QPolygonF>, 6> lines;
   std::array<std::vector<QColor>, 6> colours;
@@ -271,11 +248,11 @@ void MainWindow::showFitResiduals(const GrowthFitResult& fit) {
                                  : QColor::fromRgbF(1.0f, float(0.85 * (2 - 2 * t)), 0.2f));
   }
   facesView_->setOverlayPolylines(lines, sizes, colours);
-  facesView_->setOverlayVisible(showResidualsAction_->isChecked());
-  showResidualsAction_->setEnabled(true);
+  facesView_->setOverlayVisible(actions_.showResiduals->isChecked());
+  actions_.showResiduals->setEnabled(true);
 }
 
-void MainWindow::useOtherPithCandidate() {
+void RingsController::useOtherPithCandidate() {
   if (!lastFit_ || !lastFit_->alternative) return;
   // On the heap: a local copy made GCC 12 warn of the optional's payload (a false maybe-uninitialized).
   const auto swapped = std::make_shared<GrowthFitResult>(*lastFit_);
@@ -292,9 +269,8 @@ void MainWindow::useOtherPithCandidate() {
     return;
   }
   lastFit_ = swapped;
-  logMessage("info",
-             tr("Using the other pith candidate: iso-contour loss %1 ring spacings (again to switch back)")
-                 .arg(lastFit_->lossRings, 0, 'f', 4));
+  log("info", tr("Using the other pith candidate: iso-contour loss %1 ring spacings (again to switch back)")
+                  .arg(lastFit_->lossRings, 0, 'f', 4));
 }
 
 }  // namespace kerf

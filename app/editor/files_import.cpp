@@ -1,26 +1,19 @@
-// MainWindow: File > Import Photos (the user's own photos of the block's faces; photo_import_dialog.hpp).
-#include <QAction>
+// FilesController: File > Import Photos (the user's own photos of the block's faces;
+// photo_import_dialog.hpp).
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QSettings>
 #include <QStandardPaths>
 
 #include "document.hpp"
+#include "files_controller.hpp"
 #include "job_runner.hpp"
-#include "main_window.hpp"
 #include "photo_import.hpp"
 #include "photo_import_dialog.hpp"
 
 namespace kerf {
 
-QAction* MainWindow::createImportAction() {
-  importPhotosAction_ = new QAction(tr("&Import Photos…"), this);
-  importPhotosAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
-  importPhotosAction_->setToolTip(
-      tr("Make the face images from your own photos of the block: mark each face's corners, turn it, "
-         "white-balance it, and set the block's size"));
-  importPhotosAction_->setStatusTip(importPhotosAction_->toolTip());
-  connect(importPhotosAction_, &QAction::triggered, this, [this] { importPhotos(); });
+void FilesController::connectImport() {
   connect(jobs_, &JobRunner::jobFailed, this, [this](int id, const QString& message) {
     if (id != importJob_) return;
     importJob_ = 0;
@@ -29,10 +22,9 @@ QAction* MainWindow::createImportAction() {
   connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) {
     if (id == importJob_) importJob_ = 0;
   });
-  return importPhotosAction_;
 }
 
-void MainWindow::importPhotos(const QStringList& files) {
+void FilesController::importPhotos(const QStringList& files) {
   if (importJob_ && jobs_->isRunning(importJob_)) {
     showError(tr("Photos are being imported already; wait for that to finish."));
     return;
@@ -44,12 +36,12 @@ void MainWindow::importPhotos(const QStringList& files) {
         settings.value("import/folder", QStandardPaths::writableLocation(QStandardPaths::PicturesLocation))
             .toString();
     chosen = QFileDialog::getOpenFileNames(
-        this, tr("Photos of the block's faces"), start,
+        window_, tr("Photos of the block's faces"), start,
         tr("Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.webp);;All files (*)"));
     if (chosen.isEmpty()) return;
     settings.setValue("import/folder", QFileInfo(chosen.front()).absolutePath());
   }
-  auto* dialog = new PhotoImportDialog(document_->project().block, document_->photos(), this);
+  auto* dialog = new PhotoImportDialog(document_->project().block, document_->photos(), window_);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   dialog->addPhotos(chosen);
   connect(dialog, &QDialog::accepted, this, [this, dialog] {
@@ -57,12 +49,12 @@ void MainWindow::importPhotos(const QStringList& files) {
     importJob_ = startPhotoImport(*jobs_, *document_, plan, [this, plan] {
       importJob_ = 0;
       const glm::vec3 size = plan.block.size();
-      logMessage("info", tr("Imported the photos of face %1 into %2 (block %3 × %4 × %5 mm, %6 px/mm)")
-                             .arg(plan.faceLetters(), plan.folder)
-                             .arg(size.x, 0, 'g', 4)
-                             .arg(size.y, 0, 'g', 4)
-                             .arg(size.z, 0, 'g', 4)
-                             .arg(plan.pxPerMm, 0, 'g', 3));
+      log("info", tr("Imported the photos of face %1 into %2 (block %3 × %4 × %5 mm, %6 px/mm)")
+                      .arg(plan.faceLetters(), plan.folder)
+                      .arg(size.x, 0, 'g', 4)
+                      .arg(size.y, 0, 'g', 4)
+                      .arg(size.z, 0, 'g', 4)
+                      .arg(plan.pxPerMm, 0, 'g', 3));
       emit photosImported();
     });
   });
