@@ -5,6 +5,7 @@
 
 #include "annotation_layer.hpp"
 #include "document.hpp"
+#include "io/mokume_annotation_files.hpp"
 #include "rings/annotations.hpp"
 #include "rings/contours.hpp"
 #include "rings_controller.hpp"
