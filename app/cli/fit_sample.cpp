@@ -161,6 +161,8 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   options.pithOnly = o.pithOnly;
   options.useAnatomy = !o.ignoreAnatomy;
   options.anatomyWeight = o.anatomyWeight;
+  options.minContours = kMinFitContours;  // as the editor
+  options.minFaces = kMinFitFaces;
   options.plausiblePithDistanceMm = o.maxPithDistance;
   options.pithSideByPores = !o.ignorePores;
   const GrowthFieldFitResult fit = [&] {

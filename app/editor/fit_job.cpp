@@ -97,7 +97,7 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
     if (!photos[i].isNull()) input.photos[i] = fromQImage(photos[i]);
   GrowthFieldFitOptions options;
   options.minContours = kMinFitContours;
-  options.minFaces = 2;
+  options.minFaces = kMinFitFaces;
   if (preview)
     options.preview = [&](const WoodParameters& params, const std::optional<GrowthRates>& rates) {
       preview(params,

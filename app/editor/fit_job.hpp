@@ -89,7 +89,6 @@ using GrowthFitPreview = std::function<void(const WoodParameters&, const GrowthR
 // anatomical prior from the face photos where there are any (null images: none). Throws InputError when
 // there are too few contours to fit (fewer than kMinFitContours, or on fewer than two faces), Cancelled
 // on request. Nothing of the held-out faces (Project::heldOutFaces) is used: fit/held_out_faces.hpp.
-inline constexpr int kMinFitContours = 4;
 GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Block& block,
                                const WoodParameters& current, const std::array<QImage, 6>& photos = {},
                                const Progress& progress = {}, const std::vector<RingTrace>& traces = {},

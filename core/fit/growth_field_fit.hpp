@@ -43,6 +43,12 @@ struct GrowthFieldFitInput {
   FaceSet heldOut;
 };
 
+// What the editor and the CLI need before they fit a sample: ring contours on two faces at least, since
+// one face alone leaves the pith's distance and direction free (the fit would then return a plausible-
+// looking field the data never determined).
+inline constexpr int kMinFitContours = 4;
+inline constexpr int kMinFitFaces = 2;
+
 struct GrowthFieldFitOptions {
   glm::vec3 principal{0, 1, 0};  // the expected pith direction
   bool pithOnly = false;         // step 1 only: no growth rates are fitted

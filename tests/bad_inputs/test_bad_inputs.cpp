@@ -363,7 +363,8 @@ const BadInput kCatalogue[] = {
          writeImage(d / (std::string(face) + "_arl.png"), Image(16, 16, 1));
        return d;
      },
-     nullptr, "no ring contours to fit", "fit {dir} --out {out}/fit.kerf --ignore-anatomy"},
+     nullptr, "too few ring contours to fit the growth field: 0 on 0 faces",
+     "fit {dir} --out {out}/fit.kerf --ignore-anatomy"},
     {"FitWithAllContoursOnOneFace",
      [](const fs::path& d) {
        // Only face A has a photo: the fit would detect rings on any other face's photo.
@@ -371,7 +372,7 @@ const BadInput kCatalogue[] = {
        writeImage(d / "A_arl.png", ringImage(128, {-40.0f, 60.0f}, 12.0f));
        return d;
      },
-     nullptr, "fewer than two rings found along the fitted pith axis",
+     nullptr, "too few ring contours to fit the growth field: [0-9]+ on 1 faces",
      "fit {dir} --out {out}/fit.kerf --ignore-anatomy"},
     // --- meshes for a textured part ---
     {"MeshNonManifold",
