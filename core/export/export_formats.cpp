@@ -74,14 +74,20 @@ std::string extensionList(ExportKind kind) {
 
 std::string extensionWords(ExportKind kind) {
   std::string text;
-  for (std::string_view e : extensionsOf(kind)) text += (text.empty() ? "" : " ") + std::string(e);
+  for (std::string_view e : extensionsOf(kind)) {
+    if (!text.empty()) text += ' ';
+    text += e;
+  }
   return text;
 }
 
 std::string fileFilter(const ExportFormatInfo& info) {
   std::string patterns;
   for (std::string_view e : info.extensions)
-    if (!e.empty()) patterns += (patterns.empty() ? "*" : " *") + std::string(e);
+    if (!e.empty()) {
+      patterns += patterns.empty() ? "*" : " *";
+      patterns += e;
+    }
   return std::string(info.name) + " (" + patterns + ")";
 }
 
