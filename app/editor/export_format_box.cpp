@@ -29,8 +29,9 @@ bool selectExportFormatOf(QComboBox* box, const QString& path) {
 }
 
 QString selectedFormatFilter(const QComboBox* box) {
-  const std::optional<ExportFormatInfo> info =
-      exportFormatOf("x" + box->currentData().toString().toStdString());
+  std::string name = "x";  // a file name with the item's extension
+  name += box->currentData().toString().toStdString();
+  const std::optional<ExportFormatInfo> info = exportFormatOf(name);
   return info ? QString::fromStdString(fileFilter(*info)) : QString();
 }
 
