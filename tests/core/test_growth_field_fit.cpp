@@ -2,6 +2,7 @@
 // ring-localization images of a known pith axis, pith only and with the growth rates.
 #include <gtest/gtest.h>
 
+#include "cn03_sample.hpp"
 #include "ring_image_fixture.hpp"
 
 #include <algorithm>
@@ -118,15 +119,9 @@ TEST(GrowthFieldFit, PreviewsResidualsPerContour) {
 }
 
 TEST(GrowthFieldFit, MokumeSampleCN03ReachesTheAuthorsError) {
-  const std::filesystem::path folder = std::filesystem::path(KERF_SHARED_DIR) / "data" / "mokume" / "CN03";
-  if (!std::filesystem::is_directory(folder))
-    GTEST_SKIP() << "reference data not found at " << folder << " (../shared absent)";
-  GrowthFieldFitInput input;
-  for (FaceId f : kAllFaces) {
-    const std::string letter(1, faceLetter(f));
-    input.rings[faceIndex(f)] = readRingLocalizationImage(folder / (letter + "_arl-unet.png"));
-    input.photos[faceIndex(f)] = readImage(folder / (letter + "_col.png"));
-  }
+  if (!kerf::testing::cn03Available())
+    GTEST_SKIP() << "reference data not found at " << kerf::testing::cn03Folder() << " (../shared absent)";
+  const GrowthFieldFitInput input = kerf::testing::cn03FitInput();
   const GrowthFieldFitResult fit = fitGrowthFieldToSample(input, Block{}, WoodParameters{});
   for (const ReportLine& line : formatGrowthFieldFitReport(fit.report))
     std::printf("  %s\n", line.text.c_str());

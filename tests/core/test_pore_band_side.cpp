@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cn03_sample.hpp"
 #include "field/growth_field.hpp"
 #include "fit/growth_field_fit.hpp"
 #include "fit/pore_band_side.hpp"
@@ -100,15 +101,9 @@ TEST(PoreBandSide, TheFitPutsThePithOnThePoresSide) {
 // close the rings; the mirrored pith, within a 1 m log, explains them almost as well, and the pores choose
 // it (the "pith on the side opposite to the one the pore bands indicate").
 TEST(PoreBandSide, MokumeCN03PoresChooseThePithsSide) {
-  const std::filesystem::path folder = std::filesystem::path(KERF_SHARED_DIR) / "data" / "mokume" / "CN03";
-  if (!std::filesystem::is_directory(folder))
-    GTEST_SKIP() << "reference data not found at " << folder << " (../shared absent)";
-  GrowthFieldFitInput input;
-  for (FaceId f : kAllFaces) {
-    const std::string letter(1, faceLetter(f));
-    input.rings[faceIndex(f)] = readRingLocalizationImage(folder / (letter + "_arl-unet.png"));
-    input.photos[faceIndex(f)] = readImage(folder / (letter + "_col.png"));
-  }
+  if (!kerf::testing::cn03Available())
+    GTEST_SKIP() << "reference data not found at " << kerf::testing::cn03Folder() << " (../shared absent)";
+  const GrowthFieldFitInput input = kerf::testing::cn03FitInput();
   GrowthFieldFitOptions options;
   options.fitColours = false;
   const GrowthFieldFitResult fit =
