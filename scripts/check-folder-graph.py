@@ -37,7 +37,7 @@ ALLOWED = {
     "texture": {"util", "image", "geometry", "params", "field", "material", "render", "io", "fit"},
     "appearance": {"util", "image", "geometry", "params", "field", "render", "io"},  # photo-true, beside texture
     "mesh": {"util", "image", "geometry", "render", "io"},
-    "export": {"util", "image", "geometry", "render", "io", "mesh"},
+    "export": {"util", "image", "geometry", "field", "render", "io", "mesh"},  # field: the ring uncertainty volume
     "demo": {"util", "image", "model", "material", "render", "rings", "io"},
 }
 

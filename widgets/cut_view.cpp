@@ -16,6 +16,7 @@
 #include "gpu/board_wood_textures.hpp"
 #include "gpu/gl_helpers.hpp"
 #include "gpu/wood_program.hpp"
+#include "ring_uncertainty_overlay.hpp"
 
 namespace kerf {
 
@@ -88,7 +89,24 @@ CutView::CutView(QWidget* parent) : QOpenGLWidget(parent) {
                              [this] { zoomBy(kZoomStep, rect().center()); });
   zoomOutAction_ = makeAction(tr("Zoom Out"), {QKeySequence(Qt::Key_Minus)},
                               [this] { zoomBy(1 / kZoomStep, rect().center()); });
+  showRingUncertaintyAction_ =
+      makeAction(tr("Show How Sure the Rings Are"), {QKeySequence(Qt::Key_U)}, [this] { update(); });
+  showRingUncertaintyAction_->setCheckable(true);
+  showRingUncertaintyAction_->setChecked(false);  // the wood first; the status bar says the numbers
+  showRingUncertaintyAction_->setToolTip(
+      tr("Tint the cut by how far the fitted rings may be from the real ones (1 sigma): green within "
+         "±0.25 mm, red ±2 mm or more. Known after a fit (Rings ▸ Fit Growth Field or Reconstruct)."));
   setContextMenuPolicy(Qt::ActionsContextMenu);
+}
+
+void CutView::setRingUncertainty(std::shared_ptr<const RingUncertainty> uncertainty) {
+  ringUncertainty_ = std::move(uncertainty);
+  update();
+}
+
+bool CutView::showsRingUncertainty() const {
+  return ringUncertainty_ && !ringUncertainty_->empty() && showRingUncertaintyAction_->isChecked() &&
+         model_ && !boardWood_ && bounds();
 }
 
 CutView::~CutView() {
@@ -283,8 +301,10 @@ QString CutView::positionText(QPointF widgetPos) const {
   const auto p = blockPointAt(widgetPos);
   if (!p) return {};
   const glm::vec2 ruler = planePointAt(widgetPos) - bounds()->min;
-  return tr("Cut %1, %2 mm · Block x %3, y %4, z %5 mm")
-      .arg(mm(ruler.x, 1), mm(ruler.y, 1), mm(p->x, 2), mm(p->y, 2), mm(p->z, 2));
+  const QString where = tr("Cut %1, %2 mm · Block x %3, y %4, z %5 mm")
+                            .arg(mm(ruler.x, 1), mm(ruler.y, 1), mm(p->x, 2), mm(p->y, 2), mm(p->z, 2));
+  if (!ringUncertainty_ || ringUncertainty_->empty() || boardWood_) return where;
+  return where + QStringLiteral(" · ") + ringUncertaintyText(ringUncertainty_->at(model_->block(), *p));
 }
 
 QPolygonF CutView::cutOutline() const {
@@ -573,6 +593,7 @@ void CutView::drawOverlay() {
     painter.setBrush(Qt::NoBrush);
     painter.drawPolygon(outline);
   }
+  if (showsRingUncertainty()) drawRingUncertainty(painter, outline);
   QFont font = painter.font();
   font.setPixelSize(12);
   painter.setFont(font);
@@ -596,6 +617,22 @@ void CutView::drawOverlay() {
   painter.fillRect(badge, rulerColor().darker(115));
   painter.setPen(QColor(40, 36, 30));
   painter.drawText(badge, Qt::AlignCenter, scaleText);
+}
+
+void CutView::drawRingUncertainty(QPainter& painter, const QPolygonF& outline) {
+  const PlaneRect b = *bounds();
+  // A sample every mm, or every 8 screen pixels when zoomed out: the grid's nodes are 2-3 mm apart.
+  const float step = static_cast<float>(std::max(1.0, 8.0 / pixelsPerMm_));
+  const QImage tint = ringUncertaintyImage(*ringUncertainty_, model_->block(), *plane_, b, step);
+  const QPointF topLeft = widgetPointOf({b.min.x, b.max.y}), bottomRight = widgetPointOf({b.max.x, b.min.y});
+  painter.save();
+  QPainterPath clip;
+  clip.addPolygon(outline);
+  painter.setClipPath(clip);
+  painter.setRenderHint(QPainter::SmoothPixmapTransform);
+  painter.drawImage(QRectF(topLeft, bottomRight), tint);
+  painter.restore();
+  drawRingUncertaintyLegend(painter, rect().adjusted(static_cast<int>(kRulerPx), 0, 0, 0));
 }
 
 QRectF CutView::scaleRect() const {

@@ -37,6 +37,7 @@
 #include <memory>
 #include <optional>
 
+#include "field/ring_uncertainty.hpp"
 #include "geometry/cut_plane.hpp"
 #include "render/board_wood.hpp"
 #include "render/wood_model.hpp"
@@ -61,6 +62,11 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   // board's); null goes back to the model's wood.
   void setBoardWood(std::shared_ptr<const BoardWood> wood);
   const std::shared_ptr<const BoardWood>& boardWood() const { return boardWood_; }
+  // How sure the fit is (field/ring_uncertainty.hpp) for the model's field, drawn over the cut while
+  // showRingUncertaintyAction() is checked, and said for the point under the cursor; null: none.
+  void setRingUncertainty(std::shared_ptr<const RingUncertainty> uncertainty);
+  const std::shared_ptr<const RingUncertainty>& ringUncertainty() const { return ringUncertainty_; }
+  bool showsRingUncertainty() const;
   void setCutPlane(const CutPlaneSetting& setting);
   const CutPlaneSetting& cutPlane() const { return setting_; }
   // The plane, when it passes through the block of the current model.
@@ -111,6 +117,7 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   QAction* fitAction() const { return fitAction_; }
   QAction* zoomInAction() const { return zoomInAction_; }
   QAction* zoomOutAction() const { return zoomOutAction_; }
+  QAction* showRingUncertaintyAction() const { return showRingUncertaintyAction_; }  // U, checkable
 
   QSize sizeHint() const override { return {640, 480}; }
   QSize minimumSizeHint() const override { return {160, 120}; }
@@ -147,12 +154,14 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   int chooseRenderScale() const;
   void drawWood(int scale);
   void drawOverlay();
+  void drawRingUncertainty(class QPainter& painter, const QPolygonF& outline);
   void drawRulers(class QPainter& painter) const;
   void setPixelsPerMm(double pixelsPerMm, QPointF anchor);
   void updateCursorText(QPointF widgetPos);
   std::optional<PlaneRect> bounds() const;
 
   std::shared_ptr<const WoodModel> model_;
+  std::shared_ptr<const RingUncertainty> ringUncertainty_;
   std::shared_ptr<const BoardWood> boardWood_;
   CutPlaneSetting setting_;
   std::optional<CutPlane> plane_;
@@ -196,6 +205,7 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   QAction* fitAction_ = nullptr;
   QAction* zoomInAction_ = nullptr;
   QAction* zoomOutAction_ = nullptr;
+  QAction* showRingUncertaintyAction_ = nullptr;
 };
 
 }  // namespace kerf

@@ -44,8 +44,11 @@ Command addExportCommand(CLI::App& app) {
   command
       ->add_option("--exr-type", o->exrType, "EXR colour and rings channels: half or float (growth is float)")
       ->check(CLI::IsMember({"half", "float"}));
-  command->add_option("--quantity", o->quantity, "Volume: growth (float years) or color (RGB)")
-      ->check(CLI::IsMember({"growth", "color", "colour"}));
+  command
+      ->add_option("--quantity", o->quantity,
+                   "Volume: growth (float years), color (RGB) or ring-uncertainty (float mm, from `fit "
+                   "--uncertainty N`)")
+      ->check(CLI::IsMember({"growth", "color", "colour", "ring-uncertainty"}));
   cli::addNumber(command, "--res", o->resolution, "Volume: samples along the block's longest side", 1, 4096);
   command->add_option(
       "--depth-stack", o->depthStack,
@@ -97,6 +100,8 @@ Command addExportCommand(CLI::App& app) {
             exportKindOf(request);  // a bad path or option combination fails before the project is read
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
+            if (const RingUncertainty* sure = project.currentRingUncertainty())
+              request.ringUncertainty = *sure;
             const ExportSummary summary = runExport(model, request, context.progress());
             context.samples = summary.samples;
             std::printf("%s\n", summary.message.c_str());

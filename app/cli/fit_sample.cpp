@@ -6,6 +6,7 @@
 
 #include "fit/growth_field_fit.hpp"
 #include "fit/held_out_faces.hpp"
+#include "fit/ring_uncertainty_fit.hpp"
 #include "hold_out_option.hpp"
 #include "image/gray_image.hpp"
 #include "io/image.hpp"
@@ -49,6 +50,12 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
       "Mokume code (CN03) gets that species; a project keeps its own wood; 'none' keeps the "
       "defaults");
   addHoldOutFaceOption(command, o.holdOut);
+  cli::addNumber(command, "--uncertainty", o.uncertaintyRefits,
+                 "Also say how sure the fit is inside the block: refit the field N times on resampled ring "
+                 "contours (8 is a good choice; each refit takes about as long as the distortion fit) and "
+                 "keep the 1-sigma ring position (mm) in the project, for `export-volume --quantity "
+                 "ring-uncertainty` and the editor's cut (default 0: not estimated)",
+                 0, 64);
 }
 
 namespace {
@@ -88,6 +95,9 @@ const Preset* chosenSpecies(const FitSampleOptions& o, const fs::path& folder, b
 
 FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   FaceSet heldOut = heldOutFacesFromOption(o.holdOut);  // bad letters fail before any work
+  if (o.uncertaintyRefits == 1) throw InputError("--uncertainty needs at least 2 refits");
+  if (o.uncertaintyRefits > 0 && o.pithOnly)
+    throw InputError("--uncertainty refits the growth rates too: it cannot be used with --pith-only");
   const fs::path sample = o.sample;
   const bool isProject = fs::is_regular_file(sample);
   if (!isProject && !fs::is_directory(sample))
@@ -181,6 +191,20 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
       std::fprintf(stderr, "kerf-cli: warning: %s\n", line.text.c_str());
     else
       std::printf("%s\n", line.text.c_str());
+  }
+  project.ringUncertainty.reset();
+  if (o.uncertaintyRefits > 0 && fit.rates) {
+    std::printf("uncertainty: refitting the field %d times on resampled contours\n", o.uncertaintyRefits);
+    std::fflush(stdout);
+    RingUncertaintyOptions u;
+    u.replicates = o.uncertaintyRefits;
+    const RingUncertainty sure =
+        estimateRingUncertainty(input, project.block, fit, options, u, context.progress());
+    std::printf(
+        "uncertainty: rings within +-%.2f mm (median over the block), +-%.2f mm at the 90th "
+        "percentile (1 sigma, %d refits, calibration x%.2f)\n",
+        sure.quantile(0.5), sure.quantile(0.9), sure.replicates, sure.calibration);
+    project.ringUncertainty = sure;
   }
   project.params = fit.params;
   project.knots = fit.knots;

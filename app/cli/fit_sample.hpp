@@ -26,6 +26,7 @@ struct FitSampleOptions {
   bool ignorePores = false;  // !GrowthFieldFitOptions::pithSideByPores
   std::string species;
   std::vector<std::string> holdOut;
+  int uncertaintyRefits = 0;  // > 0: how sure the fit is (fit/ring_uncertainty_fit.hpp), kept in the project
 };
 
 // The options of the fit besides SAMPLE and --out, on `fit` and `reconstruct` alike.

@@ -11,22 +11,28 @@ namespace kerf::cli {
 
 Command addExportVolumeCommand(CLI::App& app) {
   auto* volume = app.add_subcommand(
-      "export-volume", "Write the growth field or the colour as a NRRD or OpenVDB volume (by extension)");
+      "export-volume",
+      "Write the growth field, the colour or the fit's ring uncertainty as a NRRD or OpenVDB volume "
+      "(by extension)");
   struct Options {
     std::string document, quantity = "growth", out;
     int resolution = 128;
   };
   auto o = std::make_shared<Options>();
   volume->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
-  volume->add_option("--quantity", o->quantity, "growth (float years) or color (uint8 RGB)")
-      ->check(CLI::IsMember({"growth", "color"}));
+  volume
+      ->add_option("--quantity", o->quantity,
+                   "growth (float years), color (uint8 RGB) or ring-uncertainty (float mm: how sure the fit "
+                   "is, 1 sigma; from `fit --uncertainty N`)")
+      ->check(CLI::IsMember({"growth", "color", "ring-uncertainty"}));
   cli::addNumber(volume, "--res", o->resolution, "Samples along the block's longest side", 1, 4096);
   volume->add_option("--out", o->out, "Output " + extensionList(ExportKind::Volume) + " file")->required();
   return {volume, [o](Context& context) {
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
-            const VolumeExportResult result = exportVolume(model, volumeQuantityFromName(o->quantity),
-                                                           o->resolution, o->out, context.progress());
+            const VolumeExportResult result =
+                exportVolume(model, volumeQuantityFromName(o->quantity), o->resolution, o->out,
+                             context.progress(), project.currentRingUncertainty());
             context.samples = result.samples;
             std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
                         o->out.c_str(), result.size.x, result.size.y, result.size.z, result.spacingMm.x,

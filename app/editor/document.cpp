@@ -103,6 +103,13 @@ void Document::setCutEnabled(bool enabled) {
   emit modifiedChanged(true);
 }
 
+void Document::setRingUncertainty(RingUncertainty uncertainty) {
+  project_.ringUncertainty = std::move(uncertainty);
+  dirtyWithoutUndo_ = true;
+  emit ringUncertaintyChanged();
+  emit modifiedChanged(true);
+}
+
 void Document::markModified() {
   dirtyWithoutUndo_ = true;
   emit modifiedChanged(true);

@@ -68,6 +68,11 @@ class Document : public QObject {
   void editKnots(std::vector<Knot> knots, const QString& undoText);
   // The cut's visibility is a view setting: saved with the project, but not an undo step.
   void setCutEnabled(bool enabled);
+  // How sure the fit is (Project::ringUncertainty): a result of the fit, saved with the project but not
+  // an undo step. It holds the fingerprint of its field, so it shows only while that field is the
+  // document's (undoing the fit hides it, redoing shows it again).
+  void setRingUncertainty(RingUncertainty uncertainty);
+  const RingUncertainty* ringUncertainty() const { return project_.currentRingUncertainty(); }
   // Marks the document as holding unsaved work (recovered from an autosave).
   void markModified();
 
@@ -101,6 +106,7 @@ class Document : public QObject {
   void modifiedChanged(bool modified);
   void logChanged();    // a log attached, removed or its knots edited (modelChanged may follow)
   void boardChanged();  // the board moved or resized
+  void ringUncertaintyChanged();
 
  private:
   void rebuildModel();

@@ -73,8 +73,9 @@ PartExportDialog* ExportController::showPartExportDialog() {
   return dialog;
 }
 
-int ExportController::startExport(const ExportRequest& request) {
+int ExportController::startExport(ExportRequest request) {
   const auto model = document_->model();
+  if (const RingUncertainty* sure = document_->ringUncertainty()) request.ringUncertainty = *sure;
   const QString path = QString::fromStdString(request.out.string());
   const int id = jobs_->start(
       tr("Exporting %1").arg(QFileInfo(path).fileName()),

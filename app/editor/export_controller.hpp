@@ -22,7 +22,7 @@ class ExportController : public EditorController {
 
   ExportDialog* showExportDialog(ExportDialog::Kind kind);
   PartExportDialog* showPartExportDialog();
-  int startExport(const ExportRequest& request);
+  int startExport(ExportRequest request);  // the document's ring uncertainty filled in
   // All six model faces as PNG, into a folder the user chooses.
   void exportFaces();
 

@@ -162,9 +162,11 @@ void ExportDialog::addVolumeRows(QFormLayout* form) {
   quantity_ = new QComboBox;
   quantity_->addItem(tr("Growth field (years since the pith)"), "growth");
   quantity_->addItem(tr("Colour (RGB)"), "color");
+  quantity_->addItem(tr("How sure the rings are (mm, 1 sigma)"), "ring-uncertainty");
   quantity_->setToolTip(
       tr("Growth: float years, whose whole-year iso-surfaces are the rings. Colour: the wood "
-         "as it would look on a cut at every voxel"));
+         "as it would look on a cut at every voxel. How sure: float mm, how far a ring may lie from "
+         "where the fit puts it (known after a fit)"));
   form->addRow(tr("Quantity:"), quantity_);
   resolution_ = new QSpinBox;
   resolution_->setRange(2, 2048);
@@ -305,7 +307,7 @@ void ExportDialog::updateSizeNote() {
     glm::ivec3 count;
     for (int a = 0; a < 3; ++a) count[a] = std::max(1, static_cast<int>(std::lround(n * size[a] / longest)));
     const double voxels = double(count.x) * count.y * count.z;
-    const double bytes = voxels * (quantity_->currentData().toString() == "growth" ? 4 : 3);
+    const double bytes = voxels * (quantity_->currentData().toString() == "color" ? 3 : 4);
     sizeNote_->setText(tr("%1 × %2 × %3 voxels, about %4 MiB uncompressed")
                            .arg(count.x)
                            .arg(count.y)

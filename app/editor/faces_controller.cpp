@@ -23,7 +23,9 @@ FacesController::FacesController(const EditorContext& context, RenderSettings se
       settings_(settings),
       facesView_(facesView),
       viewport_(viewport),
-      cutView_(cutView) {}
+      cutView_(cutView) {
+  connect(document_, &Document::ringUncertaintyChanged, this, &FacesController::showRingUncertainty);
+}
 
 void FacesController::setDisplayControls(QActionGroup* displays, QAction* toggleView, QSlider* slider) {
   displays_ = displays;
@@ -57,12 +59,20 @@ void FacesController::showDocumentModel() {
   const auto model = document_->model();
   viewport_->setModel(model);
   cutView_->setModel(model);
+  showRingUncertainty();
   renderFaces();
+}
+
+// How sure the fit is, over the cut: only while it belongs to the document's field.
+void FacesController::showRingUncertainty() {
+  const RingUncertainty* sure = document_->ringUncertainty();
+  cutView_->setRingUncertainty(sure ? std::make_shared<const RingUncertainty>(*sure) : nullptr);
 }
 
 void FacesController::showPreview(std::shared_ptr<const WoodModel> model) {
   viewport_->setModel(model);
   cutView_->setModel(model);
+  cutView_->setRingUncertainty(nullptr);  // a preview's field is not the one it was estimated for
   renderFacesOf(std::move(model));
 }
 

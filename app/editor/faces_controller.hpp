@@ -42,6 +42,7 @@ class FacesController : public EditorController {
 
   // The document's model on every view (after an edit, or back from a preview).
   void showDocumentModel();
+  void showRingUncertainty();  // the document's, over the cut (when it belongs to its field)
   // A model that is not the document's yet (a fit or texture under way) on every view.
   void showPreview(std::shared_ptr<const WoodModel> model);
   void renderFaces();

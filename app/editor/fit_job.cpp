@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fit/growth_field_fit.hpp"
+#include "fit/ring_uncertainty_fit.hpp"
 #include "qt_image.hpp"
 #include "rings/detect_block_rings.hpp"
 #include "util/error.hpp"
@@ -118,10 +119,23 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
     for (const glm::vec3& p : c.points) f.pointsMm.push_back(blockToFaceMm(block, c.face, p));
     out.contours.push_back(std::move(f));
   }
+  options.preview = nullptr;  // it refers to this call's arguments
+  out.options = options;
+  out.input = std::make_shared<const GrowthFieldFitInput>(std::move(input));
   if (fit.alternative && fit.alternative->rates)
     out.alternative = GrowthFitResult::Alternative{fit.alternative->params, *fit.alternative->rates,
                                                    fit.alternative->finalLossRings, fit.alternative->knots};
   return out;
+}
+
+RingUncertainty estimateFitUncertainty(const GrowthFitResult& fit, const Block& block,
+                                       const Progress& progress) {
+  if (!fit.input) throw InputError("the fit kept no input to estimate how sure it is");
+  GrowthFieldFitResult fitted;
+  fitted.params = fit.params;
+  fitted.rates = fit.rates;
+  fitted.knots = fit.knots;
+  return estimateRingUncertainty(*fit.input, block, fitted, fit.options, {}, progress);
 }
 
 }  // namespace kerf

@@ -12,11 +12,14 @@
 #include <filesystem>
 #include <functional>
 #include <glm/vec2.hpp>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "field/block_knots.hpp"
 #include "field/growth_rates.hpp"
+#include "field/ring_uncertainty.hpp"
+#include "fit/growth_field_fit.hpp"
 #include "fit/iso_contours.hpp"
 #include "geometry/block.hpp"
 #include "geometry/face_set.hpp"
@@ -80,6 +83,10 @@ struct GrowthFitResult {
     std::vector<BlockKnot> knots;
   };
   std::optional<Alternative> alternative;
+  // What the fit was given (inputs and options, without the preview), so that how sure it is can be
+  // estimated afterwards from the same evidence (estimateFitUncertainty).
+  std::shared_ptr<const GrowthFieldFitInput> input;
+  GrowthFieldFitOptions options;
 };
 
 // A field for the live preview while the fit runs (called from the fitting thread).
@@ -94,5 +101,11 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
                                const Progress& progress = {}, const std::vector<RingTrace>& traces = {},
                                const GrowthFitPreview& preview = {},
                                const std::vector<KnotMark>& knotMarks = {}, const FaceSet& heldOut = {});
+
+// How sure `fit` is inside the block (fit/ring_uncertainty_fit.hpp): the field refitted on resampled
+// contours of the fit's own input. Minutes on a large block; Cancelled on request, InputError when the fit
+// kept no input or too few refits succeed.
+RingUncertainty estimateFitUncertainty(const GrowthFitResult& fit, const Block& block,
+                                       const Progress& progress = {});
 
 }  // namespace kerf

@@ -24,16 +24,19 @@ FitGrade gradeFit(double lossRings) {
   return FitGrade::Rough;
 }
 
-QString summarizeFit(double lossRings, bool pithSideAmbiguous) {
+QString summarizeFit(double lossRings, bool pithSideAmbiguous, std::optional<FitSureness> sure) {
   static const char* const grades[] = {"close", "good", "rough", "poor"};
   QString text = tr("Fit: %1, rings off by %2 % of a ring width")
                      .arg(tr(grades[static_cast<int>(gradeFit(lossRings))]))
                      .arg(percentOfRing(lossRings));
   if (pithSideAmbiguous) text += tr("; pith side unsure");
+  if (sure)
+    text +=
+        tr("; inside the block ±%1 mm").arg(double(sure->medianMm), 0, 'f', sure->medianMm < 0.95f ? 1 : 0);
   return text;
 }
 
-QString explainFit(double lossRings, bool pithSideAmbiguous) {
+QString explainFit(double lossRings, bool pithSideAmbiguous, std::optional<FitSureness> sure) {
   QString text = tr("On average the fitted rings lie %1 % of a ring's width from the ring lines on the faces "
                     "(iso-contour loss %2 ring spacings).")
                      .arg(percentOfRing(lossRings))
@@ -58,6 +61,14 @@ QString explainFit(double lossRings, bool pithSideAmbiguous) {
     text +=
         tr(" The rings fit as well with the pith on the other side of the block: Rings ▸ Use Other Pith "
            "Candidate shows it.");
+  if (sure)
+    text += tr(" Inside the block, a ring lies within ±%1 mm of where the fit puts it at half the places "
+               "(1 sigma, from refits on resampled ring lines), and within ±%2 mm at nine in ten: the cut "
+               "shows where (green sure, red unsure; U toggles it).")
+                .arg(double(sure->medianMm), 0, 'f', 2)
+                .arg(double(sure->p90Mm), 0, 'f', 2);
+  else
+    text += tr(" How sure the fit is inside the block is estimated in the background after each fit.");
   return text;
 }
 

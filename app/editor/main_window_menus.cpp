@@ -6,6 +6,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 
+#include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
@@ -92,6 +93,7 @@ void MainWindow::createViewMenu() {
   showContoursAction_->setToolTip(
       tr("Draw the ring traces (detected and your own) and knot marks over the faces"));
   connect(showContoursAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
+  view->addAction(cutView_->showRingUncertaintyAction());
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
   view->addAction(layout_->resetAction());

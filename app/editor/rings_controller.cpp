@@ -29,6 +29,8 @@ RingsController::RingsController(const EditorContext& context, FacesController* 
   connect(document_, &Document::photosChanged, this, &RingsController::clearRingDetection);
   connect(jobs_, &JobRunner::jobFailed, this, &RingsController::ringJobEnded);
   connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { ringJobEnded(id, {}); });
+  connect(jobs_, &JobRunner::jobFailed, this, &RingsController::uncertaintyJobEnded);
+  connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { uncertaintyJobEnded(id, {}); });
 }
 
 void RingsController::setActions(const Actions& actions) {
@@ -174,7 +176,7 @@ void RingsController::fitGrowthField() {
       },
       [this](const QVariant& result) {
         fitJob_ = 0;
-        applyFit(result.value<std::shared_ptr<const GrowthFitResult>>());
+        if (applyFit(result.value<std::shared_ptr<const GrowthFitResult>>())) estimateUncertainty();
       },
       [this](const QVariant& preview) {
         const auto field = preview.value<std::shared_ptr<const std::pair<WoodParameters, GrowthRates>>>();
@@ -269,6 +271,7 @@ void RingsController::useOtherPithCandidate() {
     return;
   }
   lastFit_ = swapped;
+  estimateUncertainty();
   log("info", tr("Using the other pith candidate: iso-contour loss %1 ring spacings (again to switch back)")
                   .arg(lastFit_->lossRings, 0, 'f', 4));
 }

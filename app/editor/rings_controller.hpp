@@ -40,6 +40,11 @@ class RingsController : public EditorController {
   void fitGrowthField();
   // After an ambiguous fit (Mokume B.1): swaps the field for the one around the other pith candidate.
   void useOtherPithCandidate();
+  // How sure the last fit is (rings_uncertainty.cpp): the field refitted on resampled ring contours in a
+  // background job; it lands in the document only while the
+  // field is still the fit's. Started after every fit (after Reconstruct's last stage when it ran one).
+  void estimateUncertainty();
+  bool isEstimatingUncertainty() const;
   // The annotations as Mokume images into `folder` (asked for when empty). Returns false (with a
   // message) when nothing was written.
   bool exportAnnotations(QString folder = {});
@@ -62,6 +67,8 @@ class RingsController : public EditorController {
   void ringsDetected();
   void growthFieldFitted();
   void fitPreviewed();
+  // How sure the fit is has been estimated and is the document's (Document::ringUncertainty).
+  void fitUncertaintyEstimated();
   // Either of them failed (the message is also in the log and a message box) or was cancelled.
   void ringJobFailed(const QString& message);
 
@@ -72,12 +79,13 @@ class RingsController : public EditorController {
   void showFitResiduals(const GrowthFitResult& fit);
   void applyDetectedTraces(const RingDetection& detection);  // rings_traces.cpp
   void annotationsChanged();
+  void uncertaintyJobEnded(int id, const QString& message);  // rings_uncertainty.cpp
 
   FacesController* faces_;
   FacesView* facesView_;
   AnnotationLayer* annotationLayer_;
   Actions actions_{};
-  int ringJob_ = 0, fitJob_ = 0;
+  int ringJob_ = 0, fitJob_ = 0, uncertaintyJob_ = 0;
   std::shared_ptr<const RingDetection> ringDetection_;
   std::shared_ptr<const GrowthFitResult> lastFit_;  // for the other pith candidate
 };

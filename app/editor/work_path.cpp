@@ -109,6 +109,11 @@ WorkPath::WorkPath(MainWindow* window, QStackedWidget* facesStack)
     showPhotosOnBlock(false);
     updateFitLabel();
   });
+  // How sure the fit is lands later, and an undo or redo hides or shows it again.
+  connect(document, &Document::ringUncertaintyChanged, this, &WorkPath::updateFitLabel);
+  connect(document, &Document::modelChanged, this, [this] {
+    if (!isRunning()) updateFitLabel();
+  });
   connect(window_->showPhotosOn3dAction(), &QAction::triggered, this, [this] { photosOnBlockByUs_ = false; });
   connect(window_->jobs(), &JobRunner::jobFailed, this, &WorkPath::ended);
   connect(window_->jobs(), &JobRunner::jobProgress, this, [this](int id, double fraction) {
@@ -183,8 +188,11 @@ void WorkPath::updateFitLabel() {
     fitLabel_->setToolTip({});
     return;
   }
-  fitLabel_->setText(summarizeFit(fit->lossRings, fit->ambiguous));
-  fitLabel_->setToolTip(explainFit(fit->lossRings, fit->ambiguous));
+  std::optional<FitSureness> sure;
+  if (const RingUncertainty* u = window_->document()->ringUncertainty())
+    sure = FitSureness{u->quantile(0.5), u->quantile(0.9)};
+  fitLabel_->setText(summarizeFit(fit->lossRings, fit->ambiguous, sure));
+  fitLabel_->setToolTip(explainFit(fit->lossRings, fit->ambiguous, sure));
 }
 
 void WorkPath::cancel() {
@@ -277,6 +285,7 @@ void WorkPath::onEvent(const ReconstructEvent& event) {
 void WorkPath::finish() {
   job_ = 0;
   updateFitLabel();
+  window_->rings()->estimateUncertainty();  // now that the appearance no longer needs the cores
   Document* document = window_->document();
   if (!document->cutEnabled()) document->setCutEnabled(true);
   window_->windowLayout()->showDock(QStringLiteral("cutDock"));

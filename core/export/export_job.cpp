@@ -87,7 +87,8 @@ ExportSummary runExport(const WoodModel& model, const ExportRequest& request, co
     }
     case ExportKind::Volume: {
       const VolumeExportResult result =
-          exportVolume(model, request.quantity, request.resolution, request.out, progress);
+          exportVolume(model, request.quantity, request.resolution, request.out, progress,
+                       request.ringUncertainty ? &*request.ringUncertainty : nullptr);
       summary.samples = result.samples;
       std::ostringstream s;
       s.precision(4);

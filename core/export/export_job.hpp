@@ -29,6 +29,9 @@ struct ExportRequest {
   // Volumes.
   VolumeQuantity quantity = VolumeQuantity::Growth;
   int resolution = 128;
+  // The project's ring uncertainty of the model's field (Project::currentRingUncertainty), for
+  // VolumeQuantity::RingUncertainty; none: that quantity is refused.
+  std::optional<RingUncertainty> ringUncertainty;
   // Depth stacks (face, step, depth; pxPerMm, samples and image.pngLayer come from the fields above).
   std::optional<DepthStackOptions> depthStack;
   // Parts (.obj, .glb): the mesh, its placement and the texture resolution (supersampling: `samples`).

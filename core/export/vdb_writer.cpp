@@ -40,15 +40,16 @@ VdbWriter::VdbWriter(const std::filesystem::path& path, const NrrdLayout& layout
   } else {
     throw std::logic_error("VDB writer: float scalars or uint8 RGB only");
   }
-  std::string name = "growth";
+  std::string name = "growth", units = grid_->growth ? "years" : "";
   for (const auto& [key, value] : layout.keyValues) {
     if (key == "quantity") name = value;
+    if (key == "units") units = value;
     grid->insertMeta(key, openvdb::StringMetadata(value));
   }
   grid->setName(name);
   if (!layout.comment.empty()) grid->insertMeta("description", openvdb::StringMetadata(layout.comment));
-  grid->insertMeta("units",
-                   openvdb::StringMetadata(grid_->growth ? "years; world space in mm" : "world space in mm"));
+  grid->insertMeta(
+      "units", openvdb::StringMetadata(units.empty() ? "world space in mm" : units + "; world space in mm"));
   // Index (i, j, k) -> origin + (i, j, k) * spacing: voxel centres at the samples' block coordinates.
   openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(1.0);
   transform->preScale(openvdb::Vec3d(layout.spacing.x, layout.spacing.y, layout.spacing.z));

@@ -17,7 +17,9 @@ namespace kerf {
 VolumeQuantity volumeQuantityFromName(std::string_view name) {
   if (name == "growth") return VolumeQuantity::Growth;
   if (name == "color" || name == "colour") return VolumeQuantity::Color;
-  throw InputError("unknown volume quantity \"" + std::string(name) + "\" (use growth or color)");
+  if (name == "ring-uncertainty") return VolumeQuantity::RingUncertainty;
+  throw InputError("unknown volume quantity \"" + std::string(name) +
+                   "\" (use growth, color or ring-uncertainty)");
 }
 
 namespace {
@@ -51,7 +53,14 @@ void checkVolumeFits(const std::filesystem::path& path, glm::ivec3 n, int bytesP
 }  // namespace
 
 VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
-                                const std::filesystem::path& path, const Progress& progress) {
+                                const std::filesystem::path& path, const Progress& progress,
+                                const RingUncertainty* uncertainty) {
+  const bool sure = quantity == VolumeQuantity::RingUncertainty;
+  if (sure && (!uncertainty || uncertainty->empty()))
+    throw InputError(
+        "the project has no ring uncertainty of its current field: fit it with `kerf-cli fit --uncertainty "
+        "8` "
+        "(or let the editor's fit estimate it) first");
   if (resolution < 1 || resolution > 4096) throw InputError("volume resolution must be 1..4096 samples");
   const glm::vec3 size = model.block().size();
   const float longest = std::max({size.x, size.y, size.z});
@@ -67,7 +76,13 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
   layout.origin = origin;
   layout.keyValues.emplace_back("generator", "Kerf");
   const bool growth = quantity == VolumeQuantity::Growth;
-  if (growth) {
+  if (sure) {
+    layout.type = NrrdLayout::Type::Float32;
+    layout.comment = "Kerf fit uncertainty: 1-sigma ring position in mm at each sample (block frame, mm)";
+    layout.keyValues.emplace_back("quantity", "ring_uncertainty");
+    layout.keyValues.emplace_back("units", "mm");
+    layout.keyValues.emplace_back("refits", std::to_string(uncertainty->replicates));
+  } else if (growth) {
     layout.type = NrrdLayout::Type::Float32;
     layout.comment = "Kerf growth field: years since the pith at each sample (block frame, mm)";
     layout.keyValues.emplace_back("quantity", "growth");
@@ -94,11 +109,12 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
     layout.keyValues.emplace_back("quantity", "color");
   }
 
-  checkVolumeFits(path, n, growth ? 4 : 3);
+  const bool floatSamples = growth || sure;
+  checkVolumeFits(path, n, floatSamples ? 4 : 3);
   const std::unique_ptr<VolumeWriter> writer = openVolumeWriter(path, layout);  // .nrrd or .vdb
   const std::size_t sliceSamples = static_cast<std::size_t>(n.x) * n.y;
-  std::vector<float> floats(growth ? sliceSamples : 0);
-  std::vector<std::uint8_t> bytes(growth ? 0 : sliceSamples * 3);
+  std::vector<float> floats(floatSamples ? sliceSamples : 0);
+  std::vector<std::uint8_t> bytes(floatSamples ? 0 : sliceSamples * 3);
   for (int z = 0; z < n.z; ++z) {
     progress.throwIfCancelled();
     const float pz = origin.z + z * spacing.z;
@@ -108,7 +124,9 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
                    for (int x = 0; x < n.x; ++x) {
                      const glm::vec3 p(origin.x + x * spacing.x, py, pz);
                      const std::size_t i = static_cast<std::size_t>(y) * n.x + x;
-                     if (growth) {
+                     if (sure) {
+                       floats[i] = uncertainty->at(model.block(), p);
+                     } else if (growth) {
                        floats[i] = model.material().year(p);
                      } else {
                        const glm::vec3 c = model.evaluate(p).color;
@@ -118,7 +136,7 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
                    }
                  },
                  {nullptr, progress.stop});
-    if (growth)
+    if (floatSamples)
       writer->writeSlice(std::span<const float>(floats));
     else
       writer->writeSlice(std::span<const std::uint8_t>(bytes));

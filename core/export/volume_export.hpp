@@ -5,17 +5,21 @@
 #include <filesystem>
 #include <string_view>
 
+#include "field/ring_uncertainty.hpp"
 #include "render/wood_model.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {
 
 enum class VolumeQuantity {
-  Growth,  // float32: growth time in years (WoodSample::year); header key ring_levels lists the ring
-           // iso-values
-  Color,   // uint8 RGB
+  Growth,           // float32: growth time in years (WoodSample::year); header key ring_levels lists the ring
+                    // iso-values
+  Color,            // uint8 RGB
+  RingUncertainty,  // float32: how sure the fit is, the 1-sigma ring position in mm
+                    // (field/ring_uncertainty.hpp)
 };
-VolumeQuantity volumeQuantityFromName(std::string_view name);  // "growth" | "color"; InputError otherwise
+// "growth" | "color" | "ring-uncertainty"; InputError otherwise
+VolumeQuantity volumeQuantityFromName(std::string_view name);
 
 struct VolumeExportResult {
   glm::ivec3 size{0};
@@ -26,7 +30,9 @@ struct VolumeExportResult {
 
 // `resolution` samples along the block's longest side (1..4096); the other sides get the same spacing,
 // rounded to whole samples. Samples sit at voxel centres covering the block exactly.
+// RingUncertainty needs `uncertainty` (InputError without it: "the project has no ring uncertainty ...").
 VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
-                                const std::filesystem::path& path, const Progress& progress = {});
+                                const std::filesystem::path& path, const Progress& progress = {},
+                                const RingUncertainty* uncertainty = nullptr);
 
 }  // namespace kerf

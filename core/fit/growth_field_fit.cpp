@@ -194,6 +194,7 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   addTraceContours(contours, block, input.traces);
   report.tracesUsed = contours.count() - imageContours;
   report.numberedTraces = contours.numberedContours();
+  if (options.resampleContoursSeed) contours = resampledContours(contours, *options.resampleContoursSeed);
   report.extractSeconds = extractClock.seconds();
   if (contours.count() < options.minContours || contours.facesWithContours() < options.minFaces)
     throw InputError(
@@ -221,7 +222,14 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     report.anatomyUsed = true;
   }
   pithOptions.plausibleDistanceMm = options.plausiblePithDistanceMm;
-  report.pith = fitPith(contours, block, pithOptions, progress.part(0.0, options.pithOnly ? 0.95 : 0.45));
+  if (options.pithStart) {
+    report.pith.best = refinePith(contours, block, *options.pithStart, pithOptions,
+                                  progress.part(0.0, options.pithOnly ? 0.95 : 0.45));
+    report.pith.contours = contours.count();
+    report.pith.points = static_cast<int>(contours.points.size());
+  } else {
+    report.pith = fitPith(contours, block, pithOptions, progress.part(0.0, options.pithOnly ? 0.95 : 0.45));
+  }
   const bool anyImage =
       std::any_of(input.rings.begin(), input.rings.end(), [](const GrayImage8& i) { return !i.empty(); });
 

@@ -5,6 +5,7 @@
 // field (Sec. 5.2.3, fit/pith_fit.hpp) with the ring width and phase along it, and step 2 the growth rates
 // R (Eq. 4-6, fit/distortion_fit.hpp) with the rings moved to whole years.
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <glm/vec3.hpp>
 #include <optional>
@@ -67,6 +68,12 @@ struct GrowthFieldFitOptions {
   bool fitColours = true;
   // Knots from input.knotMarks (not with pithOnly).
   bool fitKnots = true;
+  // A bootstrap replicate (fit/ring_uncertainty.hpp): the contours are drawn with replacement, whole
+  // (the points along one contour do not err independently), with this seed.
+  std::optional<std::uint64_t> resampleContoursSeed;
+  // Refine the pith from this axis only (no grid search, no mirrored candidate): a replicate starts from
+  // the fitted pith, so that it measures the spread around it rather than a different local minimum.
+  std::optional<PithAxis> pithStart;
   // Live preview: called (from the fitting thread) with the undeformed field after the pith stage
   // (rates: none) and with the final field.
   std::function<void(const WoodParameters&, const std::optional<GrowthRates>&)> preview;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "field/growth_field.hpp"
 #include "util/error.hpp"
@@ -51,6 +52,22 @@ void addTraceContours(IsoContours& contours, const Block& block, const std::vect
 int IsoContours::numberedContours() const {
   return static_cast<int>(
       std::count_if(year.begin(), year.end(), [](const auto& y) { return y.has_value(); }));
+}
+
+IsoContours resampledContours(const IsoContours& contours, std::uint64_t seed) {
+  IsoContours out;
+  if (contours.count() == 0) return out;
+  std::mt19937_64 random(seed);
+  std::uniform_int_distribution<int> pick(0, contours.count() - 1);
+  for (int n = 0; n < contours.count(); ++n) {
+    const int c = pick(random);
+    out.points.insert(out.points.end(), contours.points.begin() + contours.begin[c],
+                      contours.points.begin() + contours.begin[c + 1]);
+    out.begin.push_back(static_cast<int>(out.points.size()));
+    out.face.push_back(contours.face[c]);
+    out.year.push_back(contours.year[c]);
+  }
+  return out;
 }
 
 double lowerMedian(std::vector<double>& v) {

@@ -13,6 +13,7 @@
 //   - sumOverFaces: sum_f L_f. The authors log 10 * sum_f L_f with g in cube units (40 mm), so for g in
 //     mm their number is 10 * sumOverFaces / 40 (see mokumeLoggedLoss()).
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -40,6 +41,10 @@ struct IsoContours {
   int facesWithContours() const;
   int numberedContours() const;
 };
+
+// A bootstrap replicate (fit/ring_uncertainty.hpp): as many contours as `contours` holds, drawn whole with
+// replacement (a uniform draw per contour from a seeded generator: the same seed, the same replicate).
+IsoContours resampledContours(const IsoContours& contours, std::uint64_t seed);
 
 // Lifts pixel contours of one face image (imageSize pixels covering the face) onto the block. Pixel
 // (x, y) goes to continuous image coordinates (x + pixelOffset, y + pixelOffset): 0.5 is Kerf's pixel

@@ -12,6 +12,7 @@
 #include "io/block_knots_json.hpp"
 #include "io/json_file.hpp"
 #include "io/mokume_annotation_files.hpp"
+#include "io/ring_uncertainty_json.hpp"
 #include "io/sample_folder.hpp"
 #include "params/parameter_json.hpp"
 #include "util/error.hpp"
@@ -97,6 +98,12 @@ GrowthRates growthRatesFromJson(const json& in) {
   }
 }
 
+const RingUncertainty* Project::currentRingUncertainty() const {
+  if (!ringUncertainty || ringUncertainty->empty()) return nullptr;
+  return ringUncertainty->field == fieldFingerprint(params, effectiveRates(), knots) ? &*ringUncertainty
+                                                                                     : nullptr;
+}
+
 json projectToJson(const Project& project, const fs::path& baseDir) {
   json faces = json::object();
   for (FaceId face : kAllFaces) {
@@ -115,6 +122,7 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
   if (!project.annotations.empty()) out["annotations"] = annotationsToJson(project.annotations);
   if (project.log) out["log"] = projectLogToJson(*project.log);
   if (!project.knots.empty()) out["knots"] = blockKnotsToJson(project.knots);
+  if (project.ringUncertainty) out["ring_uncertainty"] = ringUncertaintyToJson(*project.ringUncertainty);
   if (!project.heldOutFaces.empty()) out["held_out_faces"] = project.heldOutFaces.letters();
   if (project.appearance != Appearance::Procedural) out["appearance"] = appearanceName(project.appearance);
   if (project.cutPlane) {
@@ -170,6 +178,8 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
   }
   if (in.contains("log") && !in["log"].is_null()) project.log = projectLogFromJson(in["log"]);
   if (in.contains("knots") && !in["knots"].is_null()) project.knots = blockKnotsFromJson(in["knots"]);
+  if (in.contains("ring_uncertainty") && !in["ring_uncertainty"].is_null())
+    project.ringUncertainty = ringUncertaintyFromJson(in["ring_uncertainty"]);
   if (in.contains("held_out_faces") && !in["held_out_faces"].is_null()) {
     const json& held = in["held_out_faces"];
     if (!held.is_string())

@@ -9,6 +9,7 @@
 
 #include "field/block_knots.hpp"
 #include "field/growth_rates.hpp"
+#include "field/ring_uncertainty.hpp"
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
 #include "geometry/face_set.hpp"
@@ -49,12 +50,18 @@ struct Project {
   // Knots in the block's growth field (Mokume Sec. 5.2.4; fitted from knot marks or edited), optional key
   // "knots" (io/block_knots_json.hpp).
   std::vector<BlockKnot> knots;
+  // How sure the fit is inside the block (field/ring_uncertainty.hpp), when estimated; it belongs to the
+  // field whose fingerprint it holds (ringUncertaintyOf). Optional key "ring_uncertainty".
+  std::optional<RingUncertainty> ringUncertainty;
   // Faces held out of every fit (leave-one-face-out, docs/fitting.md): ring detection, the growth-field
   // fit, the colours and the texture use nothing of their photos, so their rendering is a prediction.
   // Optional key "held_out_faces", the letters ("C"); absent when empty.
   FaceSet heldOutFaces;
   // Optional key "appearance" ("photo"); absent when procedural.
   Appearance appearance = Appearance::Procedural;
+
+  // The ring uncertainty when it belongs to the current field (not stale after a refit or an edit).
+  const RingUncertainty* currentRingUncertainty() const;
 
   GrowthRates effectiveRates() const { return rates ? *rates : synthesizeGrowthRates(params, block); }
 };

@@ -215,6 +215,30 @@ void TestFirstHour::walkthroughFromPhotosToCut() {
   QVERIFY(QTest::qWaitFor([&] { return rendered.count() > 0 || !window_->isBusy(); }, kTimeoutMs));
   QVERIFY(QTest::qWaitFor([&] { return !window_->isBusy(); }, kTimeoutMs));
   shoot(QStringLiteral("walkthrough_5_cut"));
+  // 7. How sure the fit is: estimated in the background once the wood has landed, said in the status bar,
+  // and drawn over the cut on demand (U).
+  const RingUncertainty* sure = document->ringUncertainty();
+  QVERIFY2(sure, qPrintable(window_->log()->text().right(600)));
+  QVERIFY(sure->quantile(0.5) > 0.0f);
+  const QString withSure = path->fitLabel()->text();
+  QVERIFY2(withSure.contains(QStringLiteral("inside the block ±")), qPrintable(withSure));
+  qInfo("%s", qPrintable(withSure));
+  QVERIFY(window_->cutView()->ringUncertainty());
+  QVERIFY(!window_->cutView()->showsRingUncertainty());
+  window_->cutView()->showRingUncertaintyAction()->trigger();
+  QVERIFY(window_->cutView()->showsRingUncertainty());
+  QTest::qWait(50);
+  shoot(QStringLiteral("walkthrough_6_how_sure"));
+  window_->cutView()->showRingUncertaintyAction()->trigger();
+  // Undoing the fit hides it (it belongs to that field); redoing brings it back.
+  undo->undo();
+  undo->undo();
+  QVERIFY(!document->ringUncertainty());
+  QVERIFY(!window_->cutView()->ringUncertainty());
+  undo->redo();
+  undo->redo();
+  QVERIFY(document->ringUncertainty());
+  QVERIFY(window_->cutView()->ringUncertainty());
   QFile log(QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/walkthrough_log.txt"));
   QVERIFY(log.open(QIODevice::WriteOnly));
   log.write(window_->log()->text().toUtf8());

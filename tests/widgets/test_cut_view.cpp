@@ -1,6 +1,7 @@
 // CutView: the live GLSL cut at true scale. Renders on Mesa (xvfb-run), checks the picture against
 // core's model point by point, the orientation, zoom, rulers, cursor text and the reduced-resolution
 // frames, measures frame times, and saves screenshots to test-artifacts/.
+#include <QAction>
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QFile>
@@ -54,6 +55,7 @@ class TestCutView : public QObject {
   void anotherModelAndAMissingPlane();
   void zoomAndPan();
   void cursorPosition();
+  void ringUncertaintyOverlay();
   void reducedResolutionWhileStreaming();
   void frameTimes();
   void logModeFrameTimes();
@@ -312,6 +314,43 @@ void TestCutView::cursorPosition() {
   QApplication::sendEvent(view_.get(), &away);
   QCOMPARE(spy.count(), 1);
   QVERIFY(spy.takeFirst().at(0).toString().isEmpty());
+}
+
+// How sure the fit is, over the cut: a grid that is sure on the block's -x side and unsure on its +x side
+// tints the cut green there and red here, says so under the cursor, and goes away with U or without a grid.
+void TestCutView::ringUncertaintyOverlay() {
+  view_->setCutPlane(crossSection(0));  // right = +x
+  view_->zoomToFit();
+  const QImage plain = frame();
+  auto sure = std::make_shared<RingUncertainty>();
+  sure->nodes = {2, 2, 2};
+  sure->sigmaMm = {0.1f, 3.0f, 0.1f, 3.0f, 0.1f, 3.0f, 0.1f, 3.0f};  // x = -20: 0.1 mm, x = +20: 3 mm
+  view_->setRingUncertainty(sure);
+  QVERIFY(!view_->showsRingUncertainty());  // off until asked for: the wood first
+  QCOMPARE(frame(), plain);
+  view_->showRingUncertaintyAction()->trigger();
+  QVERIFY(view_->showsRingUncertainty());
+  const QImage tinted = frame();
+  const QRectF cut = view_->cutOutline().boundingRect();
+  const QPoint left(static_cast<int>(cut.left() + 0.1 * cut.width()), static_cast<int>(cut.center().y()));
+  const QPoint right(static_cast<int>(cut.right() - 0.1 * cut.width()), static_cast<int>(cut.center().y()));
+  const auto greenMinusRed = [](QColor c) { return c.green() - c.red(); };
+  // The tint moves the sure side towards green and the unsure side towards red.
+  QVERIFY2(greenMinusRed(tinted.pixelColor(left)) > greenMinusRed(plain.pixelColor(left)) + 10,
+           qPrintable(tinted.pixelColor(left).name() + " vs " + plain.pixelColor(left).name()));
+  QVERIFY2(greenMinusRed(tinted.pixelColor(right)) < greenMinusRed(plain.pixelColor(right)) - 10,
+           qPrintable(tinted.pixelColor(right).name() + " vs " + plain.pixelColor(right).name()));
+  QVERIFY(view_->positionText(left).contains(QStringLiteral("rings ±0.")));
+  QVERIFY(view_->positionText(right).contains(QStringLiteral("rings ±3 mm")));
+  QVERIFY(tinted.save(kArtifacts + "/cut_view_ring_uncertainty.png"));
+  view_->showRingUncertaintyAction()->trigger();
+  QCOMPARE(frame(), plain);
+  view_->showRingUncertaintyAction()->trigger();
+  view_->setRingUncertainty(nullptr);
+  QVERIFY(!view_->showsRingUncertainty());
+  QCOMPARE(frame(), plain);
+  QVERIFY(!view_->positionText(left).contains(QStringLiteral("rings")));
+  view_->showRingUncertaintyAction()->setChecked(false);
 }
 
 void TestCutView::reducedResolutionWhileStreaming() {
