@@ -41,7 +41,7 @@ QColor ringUncertaintyColor(float sigmaMm) {
 }
 
 QString ringUncertaintyText(float sigmaMm) {
-  const int digits = sigmaMm < 0.3f ? 2 : sigmaMm < 0.95f ? 1 : 0;
+  const int digits = sigmaMm < 0.3f ? 2 : sigmaMm < 9.95f ? 1 : 0;
   return QStringLiteral("rings ±%1 mm").arg(double(sigmaMm), 0, 'f', digits);
 }
 

@@ -32,7 +32,7 @@ QString summarizeFit(double lossRings, bool pithSideAmbiguous, std::optional<Fit
   if (pithSideAmbiguous) text += tr("; pith side unsure");
   if (sure)
     text +=
-        tr("; inside the block ±%1 mm").arg(double(sure->medianMm), 0, 'f', sure->medianMm < 0.95f ? 1 : 0);
+        tr("; inside the block ±%1 mm").arg(double(sure->medianMm), 0, 'f', sure->medianMm < 9.95f ? 1 : 0);
   return text;
 }
 

@@ -27,7 +27,26 @@ struct ReconstructInput {
   Annotations annotations;  // the user's own traces are kept and fitted with the detected ones; knot marks
   TextureInferenceOptions appearance;
   bool inferAppearance = true;  // false: the procedural wood of the fit (its colours) is the appearance
+  // Re-running after a correction (issue 20 item 2): what is still current is reused, not redone.
+  // rings: the ring images of the current photos; detection is skipped and the document's traces, the
+  // user's corrections included, are fitted as they are. field (with rings): the document's current
+  // field; only the appearance is inferred on it.
+  std::shared_ptr<const RingDetection> rings;
+  std::shared_ptr<const GrowthFitResult> field;
 };
+
+// What is still current in a document, and so what a Reconstruct must redo (issue 20 item 2): a stage
+// runs when its own result is stale or an earlier stage runs.
+struct ReconstructState {
+  bool ringsCurrent = false;       // a detection of the current photos (held-out faces left out)
+  bool fieldCurrent = false;       // the document's field is the last fit's, no trace or mark changed since
+  bool appearanceCurrent = false;  // the wood was inferred on the document's field
+};
+struct ReconstructPlan {
+  bool detect = true, fit = true, infer = true;
+  bool nothing() const { return !detect && !fit && !infer; }
+};
+ReconstructPlan planReconstruct(const ReconstructState& state, bool inferAppearance);
 
 // One thing that happened, in order; exactly one of the pointers is set unless `started`.
 struct ReconstructEvent {
@@ -42,7 +61,8 @@ struct ReconstructEvent {
 
 using ReconstructEvents = std::function<void(const ReconstructEvent&)>;
 
-// Runs the three stages (the appearance only with inferAppearance). Throws InputError (no photos, too few
+// Runs the three stages (the appearance only with inferAppearance; detection and fit not when `rings` and
+// `field` are given). Throws InputError (no photos, too few
 // rings to fit, ...) and Cancelled; what had landed before was already handed to `events`.
 void reconstructFromPhotos(const ReconstructInput& input, const Progress& progress,
                            const ReconstructEvents& events);

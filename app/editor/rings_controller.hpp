@@ -45,6 +45,7 @@ class RingsController : public EditorController {
   // field is still the fit's. Started after every fit (after Reconstruct's last stage when it ran one).
   void estimateUncertainty();
   bool isEstimatingUncertainty() const;
+  void cancelUncertainty();
   // The annotations as Mokume images into `folder` (asked for when empty). Returns false (with a
   // message) when nothing was written.
   bool exportAnnotations(QString folder = {});

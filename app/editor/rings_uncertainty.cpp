@@ -12,9 +12,13 @@ bool RingsController::isEstimatingUncertainty() const {
   return uncertaintyJob_ && jobs_->isRunning(uncertaintyJob_);
 }
 
-void RingsController::estimateUncertainty() {
+void RingsController::cancelUncertainty() {
   if (isEstimatingUncertainty()) jobs_->cancel(uncertaintyJob_);
   uncertaintyJob_ = 0;
+}
+
+void RingsController::estimateUncertainty() {
+  cancelUncertainty();
   const std::shared_ptr<const GrowthFitResult> fit = lastFit_;
   if (!fit || !fit->input) return;
   const Block block = document_->project().block;

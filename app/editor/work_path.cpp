@@ -17,11 +17,13 @@
 #include "document.hpp"
 #include "document_jobs.hpp"
 #include "faces_view.hpp"
+#include "field/ring_uncertainty.hpp"
 #include "fit_quality.hpp"
 #include "job_runner.hpp"
 #include "main_window.hpp"
 #include "recent_files.hpp"
 #include "start_page.hpp"
+#include "texture_controller.hpp"
 #include "window_layout.hpp"
 
 namespace kerf {
@@ -108,6 +110,16 @@ WorkPath::WorkPath(MainWindow* window, QStackedWidget* facesStack)
   connect(window_, &MainWindow::growthFieldFitted, this, [this] {
     showPhotosOnBlock(false);
     updateFitLabel();
+    annotationsChangedSinceFit_ = false;
+  });
+  connect(document, &Document::annotationsChanged, this, &WorkPath::annotationsEdited);
+  connect(document, &Document::documentReset, this, [this] {
+    annotationsChangedSinceFit_ = true;
+    appearanceField_.reset();
+  });
+  connect(window_->texture(), &TextureController::textureInferred, this, [this] {
+    const Project& project = window_->document()->project();
+    appearanceField_ = fieldFingerprint(project.params, project.effectiveRates(), project.knots);
   });
   // How sure the fit is lands later, and an undo or redo hides or shows it again.
   connect(document, &Document::ringUncertaintyChanged, this, &WorkPath::updateFitLabel);
@@ -220,6 +232,7 @@ void WorkPath::reconstruct() {
     refuse(tr("Other ring or texture work is still running; reconstruct when it has finished."));
     return;
   }
+  window_->rings()->cancelUncertainty();  // of the field this run may replace; estimated again at the end
   ReconstructInput input;
   const Project& project = document->project();
   input.block = project.block;
@@ -229,9 +242,29 @@ void WorkPath::reconstruct() {
   input.annotations = project.annotations;
   input.appearance = window_->texture()->textureOptions();
   input.inferAppearance = inferAppearance_;
-  window_->logMessage("info", tr("Reconstructing the wood from the face photos"));
+  // After a correction only what depends on it runs again; with nothing changed, all of it (the user asked).
+  ReconstructPlan plan = planReconstruct(currentState(), inferAppearance_);
+  if (plan.nothing()) {
+    plan = ReconstructPlan{};
+    plan.infer = inferAppearance_;
+    window_->logMessage("info",
+                        tr("Nothing changed since the wood was reconstructed: reconstructing it all again"));
+  } else if (!plan.detect) {
+    input.rings = window_->rings()->ringDetection();
+    if (!plan.fit) input.field = window_->rings()->lastFit();
+    input.inferAppearance = plan.infer;
+    window_->logMessage(
+        "info", !plan.fit
+                    ? tr("Reconstructing: the rings and the field are as they were; inferring the wood again")
+                    : tr("Reconstructing: the rings are kept as they are (your corrections with them); "
+                         "refitting the field%1")
+                          .arg(plan.infer ? tr(" and the wood") : QString()));
+  }
+  if (plan.detect) window_->logMessage("info", tr("Reconstructing the wood from the face photos"));
   job_ = jobs->start(
-      stageName(ReconstructStage::Rings),
+      stageName(plan.detect ? ReconstructStage::Rings
+                : plan.fit  ? ReconstructStage::Field
+                            : ReconstructStage::Appearance),
       [input](const Progress& progress, const JobRunner::Preview& preview) -> QVariant {
         reconstructFromPhotos(input, progress, [&preview](const ReconstructEvent& event) {
           preview(QVariant::fromValue(std::make_shared<const ReconstructEvent>(event)));
@@ -255,7 +288,9 @@ void WorkPath::onEvent(const ReconstructEvent& event) {
     return;
   }
   if (event.rings) {  // the rings over the faces' photos
+    applyingDetection_ = true;
     window_->rings()->showRingDetection(event.rings);
+    applyingDetection_ = false;
     emit stageLanded(ReconstructStage::Rings);
   } else if (event.fieldPreview) {  // the field as it is being fitted: on the block and the cut
     showPhotosOnBlock(false);

@@ -5,6 +5,8 @@
 // background job of named stages, each stage's result shown as it lands: the rings on the faces, then the
 // field, then the wood), ending on the cut; and the fit's quality in words in the status bar (item 3).
 #include <QObject>
+#include <cstdint>
+#include <optional>
 
 #include "reconstruct_job.hpp"
 
@@ -71,6 +73,12 @@ class WorkPath : public QObject {
   int job_ = 0;
   QString stage_;  // the running stage's name
   bool inferAppearance_ = true;
+  // What a later Reconstruct may reuse (issue 20 item 2; work_path_rerun.cpp).
+  ReconstructState currentState() const;
+  void annotationsEdited();
+  bool annotationsChangedSinceFit_ = true;
+  bool applyingDetection_ = false;                // Reconstruct's own detected traces are landing
+  std::optional<std::uint64_t> appearanceField_;  // the field the wood was last inferred on
   bool photosOnBlockByUs_ = false;  // turned on for photos without a model: off again once one is fitted
 };
 

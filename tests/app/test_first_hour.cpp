@@ -54,6 +54,8 @@ class TestFirstHour : public QObject {
   void reconstructNeedsPhotos();
   void walkthroughFromPhotosToCut();
   void stoppedAtOnceChangesNothing();
+  void planReconstructRerunsWhatDependsOnTheChange();
+  void aCorrectedRingRefitsWithoutDetectingAgain();
   void cleanupTestCase() { window_.reset(); }
 
  private:
@@ -154,11 +156,12 @@ void TestFirstHour::walkthroughFromPhotosToCut() {
   QList<ReconstructStage> started, landed;
   QStringList stageNames;
   WorkPath* path = window_->workPath();
-  connect(path, &WorkPath::stageStarted, this, [&](ReconstructStage stage) {
+  QObject scope;  // the lambdas below capture this function's locals: disconnected when it returns
+  connect(path, &WorkPath::stageStarted, &scope, [&](ReconstructStage stage) {
     started << stage;
     stageNames << window_->workPath()->fitLabel()->text();
   });
-  connect(path, &WorkPath::stageLanded, this, [&](ReconstructStage stage) {
+  connect(path, &WorkPath::stageLanded, &scope, [&](ReconstructStage stage) {
     landed << stage;
     if (stage == ReconstructStage::Rings) {
       // The rings, the document's detected traces, drawn over the photos.
@@ -262,6 +265,56 @@ void TestFirstHour::stoppedAtOnceChangesNothing() {
   QCOMPARE(landed.count(), 0);
   QCOMPARE(undo->count(), steps);
   QVERIFY(window_->document()->project().params == before);
+}
+
+// Which stages a later Reconstruct runs (issue 20 item 2): a stage runs when its result is stale or an
+// earlier stage runs; the appearance only when asked for.
+void TestFirstHour::planReconstructRerunsWhatDependsOnTheChange() {
+  const auto plan = [](bool rings, bool field, bool wood, bool infer = true) {
+    const ReconstructPlan p = planReconstruct({rings, field, wood}, infer);
+    return QString("%1%2%3").arg(p.detect ? "R" : "-", p.fit ? "F" : "-", p.infer ? "A" : "-");
+  };
+  QCOMPARE(plan(false, false, false), QStringLiteral("RFA"));  // new photos: everything
+  QCOMPARE(plan(false, true, true), QStringLiteral("RFA"));    // rings stale: what follows too
+  QCOMPARE(plan(true, false, true), QStringLiteral("-FA"));    // a corrected ring: the field and the wood
+  QCOMPARE(plan(true, true, false), QStringLiteral("--A"));    // a field edited by hand: the wood
+  QCOMPARE(plan(true, true, true), QStringLiteral("---"));     // nothing changed
+  QCOMPARE(plan(true, false, true, false), QStringLiteral("-F-"));
+}
+
+// After the walkthrough: the user deletes a wrong ring trace. Reconstruct then keeps the rings as they
+// are (no detection, the deletion stays), refits the field and infers the wood again.
+void TestFirstHour::aCorrectedRingRefitsWithoutDetectingAgain() {
+  if (!window_->document()->hasPhotos()) QSKIP("needs the walkthrough's photos (../shared is absent)");
+  Document* document = window_->document();
+  QVERIFY(QTest::qWaitFor([&] { return !window_->isBusy(); }, kTimeoutMs));
+  Annotations corrected = document->annotations();
+  QVERIFY(corrected.traces.size() > 4);
+  corrected.traces.erase(corrected.traces.begin());
+  document->editAnnotations(corrected, QStringLiteral("Delete trace"));
+  const std::size_t traces = document->annotations().traces.size();
+  QUndoStack* undo = document->undoStack();
+  const int steps = undo->count();
+  QList<ReconstructStage> started;
+  WorkPath* path = window_->workPath();
+  QObject scope;  // the lambda captures this function's locals
+  connect(path, &WorkPath::stageStarted, &scope, [&](ReconstructStage stage) { started << stage; });
+  QSignalSpy done(path, &WorkPath::reconstructed);
+  QSignalSpy failed(path, &WorkPath::reconstructFailed);
+  path->reconstructAction()->trigger();
+  QVERIFY(path->isRunning());
+  QVERIFY(QTest::qWaitFor([&] { return done.count() + failed.count() > 0; }, kTimeoutMs));
+  QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
+  const QList<ReconstructStage> rerun = {ReconstructStage::Field, ReconstructStage::Appearance};
+  QCOMPARE(started, rerun);
+  QCOMPARE(document->annotations().traces.size(), traces);  // the correction is kept
+  QCOMPARE(undo->count(), steps + 2);
+  QCOMPARE(undo->text(undo->count() - 2), QStringLiteral("Fit growth field"));
+  QCOMPARE(undo->text(undo->count() - 1), QStringLiteral("Infer texture"));
+  QVERIFY(window_->log()->text().contains(QStringLiteral("the rings are kept as they are")));
+  QVERIFY(window_->rings()->isEstimatingUncertainty());  // of the refitted field, as after any fit
+  window_->rings()->cancelUncertainty();                 // the walkthrough has checked what it gives
+  QVERIFY(window_->jobs()->waitForDone(kTimeoutMs));
 }
 
 int main(int argc, char** argv) {
