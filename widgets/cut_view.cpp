@@ -621,8 +621,13 @@ void CutView::drawOverlay() {
 
 void CutView::drawRingUncertainty(QPainter& painter, const QPolygonF& outline) {
   const PlaneRect b = *bounds();
-  // A sample every mm, or every 8 screen pixels when zoomed out: the grid's nodes are 2-3 mm apart.
-  const float step = static_cast<float>(std::max(1.0, 8.0 / pixelsPerMm_));
+  // A quarter of the grid's node spacing (finer shows nothing more: it is trilinear between nodes), and
+  // no finer than 8 screen pixels when zoomed out; so a large block costs no more than a small one.
+  const glm::vec3 size = model_->block().size();
+  const float nodeSpacing = std::max({size.x / float(std::max(1, ringUncertainty_->nodes.x - 1)),
+                                      size.y / float(std::max(1, ringUncertainty_->nodes.y - 1)),
+                                      size.z / float(std::max(1, ringUncertainty_->nodes.z - 1))});
+  const float step = std::max(0.25f * nodeSpacing, static_cast<float>(8.0 / pixelsPerMm_));
   const QImage tint = ringUncertaintyImage(*ringUncertainty_, model_->block(), *plane_, b, step);
   const QPointF topLeft = widgetPointOf({b.min.x, b.max.y}), bottomRight = widgetPointOf({b.max.x, b.min.y});
   painter.save();

@@ -21,6 +21,9 @@ void RingsController::estimateUncertainty() {
   cancelUncertainty();
   const std::shared_ptr<const GrowthFitResult> fit = lastFit_;
   if (!fit || !fit->input) return;
+  // Already known for this field (e.g. Reconstruct re-ran only the wood on it): nothing to redo.
+  const RingUncertainty* known = document_->ringUncertainty();
+  if (known && known->field == fieldFingerprint(fit->params, fit->rates, fit->knots)) return;
   const Block block = document_->project().block;
   uncertaintyJob_ = jobs_->start(
       tr("Estimating how sure the fit is"),

@@ -312,8 +312,10 @@ void TestFirstHour::aCorrectedRingRefitsWithoutDetectingAgain() {
   QCOMPARE(undo->text(undo->count() - 2), QStringLiteral("Fit growth field"));
   QCOMPARE(undo->text(undo->count() - 1), QStringLiteral("Infer texture"));
   QVERIFY(window_->log()->text().contains(QStringLiteral("the rings are kept as they are")));
-  QVERIFY(window_->rings()->isEstimatingUncertainty());  // of the refitted field, as after any fit
-  window_->rings()->cancelUncertainty();                 // the walkthrough has checked what it gives
+  // How sure the refitted field is: being estimated, as after any fit (or, on a very fast machine,
+  // already known); the walkthrough has checked what it gives, so it is stopped here.
+  QVERIFY(window_->rings()->isEstimatingUncertainty() || document->ringUncertainty());
+  window_->rings()->cancelUncertainty();
   QVERIFY(window_->jobs()->waitForDone(kTimeoutMs));
 }
 
