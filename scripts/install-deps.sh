@@ -9,7 +9,7 @@ packages=(
   # scripts/check-folder-graph.py (standard library only)
   python3-minimal
   # core libraries
-  libglm-dev libeigen3-dev libceres-dev libopencv-dev libopenimageio-dev openimageio-tools
+  libglm-dev libeigen3-dev libceres-dev libopencv-dev libopenimageio-dev openimageio-tools libpng-dev libstb-dev
   nlohmann-json3-dev libcli11-dev
   # OpenVDB volume export; Debian's find module also needs Boost.Iostreams, which the package does not pull in
   libopenvdb-dev libboost-iostreams-dev

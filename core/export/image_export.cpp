@@ -1,14 +1,15 @@
 #include "export/image_export.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
 #include "export/export_formats.hpp"
 #include "io/atomic_file.hpp"
+#include "io/oiio_module.hpp"
+#include "io/png_codec.hpp"
 #include "render/renderers.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -38,15 +39,14 @@ float srgbToLinear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-void setScale(OIIO::ImageSpec& spec, float pxPerMm, const std::string& description) {
-  spec.attribute("XResolution", pxPerMm * kMmPerInch);
-  spec.attribute("YResolution", pxPerMm * kMmPerInch);
-  spec.attribute("ResolutionUnit", "in");
-  spec.attribute("PixelAspectRatio", 1.0f);
-  spec.attribute("Kerf:px_per_mm", pxPerMm);
-  spec.attribute("Kerf:mm_per_pixel", 1.0f / pxPerMm);
-  spec.attribute("Software", "Kerf");
-  spec.attribute("ImageDescription", description);
+// The scale, in the attributes TIFF and EXR readers know (OpenImageIO's names).
+void setScale(OiioPage& page, float pxPerMm, const std::string& description) {
+  page.floatAttributes = {{"XResolution", pxPerMm * kMmPerInch},
+                          {"YResolution", pxPerMm * kMmPerInch},
+                          {"PixelAspectRatio", 1.0f},
+                          {"Kerf:px_per_mm", pxPerMm},
+                          {"Kerf:mm_per_pixel", 1.0f / pxPerMm}};
+  page.textAttributes = {{"ResolutionUnit", "in"}, {"Software", "Kerf"}, {"ImageDescription", description}};
 }
 
 // Interleaves one image's channels after another's (same size).
@@ -78,21 +78,31 @@ std::string scaleText(float pxPerMm) {
   return s.str();
 }
 
-void check(bool ok, OIIO::ImageOutput& out, const std::filesystem::path& path) {
-  if (!ok) throw InputError("cannot write " + path.string() + ": " + out.geterror());
+OiioPage page(const Image& pixels, const std::string& type, std::vector<std::string> channelNames) {
+  OiioPage out;
+  out.pixels = &pixels;
+  out.type = type;
+  out.channelNames = std::move(channelNames);
+  return out;
+}
+
+void writeWithOiio(const std::filesystem::path& path, const std::filesystem::path& temporary,
+                   const std::vector<OiioPage>& pages) {
+  const std::string error = oiioCodecs(path).writePages(path.string(), temporary.string(), pages);
+  if (!error.empty()) throw InputError("cannot write " + path.string() + ": " + error);
 }
 
 void writePng(const std::filesystem::path& path, const std::filesystem::path& temporary,
               const LayeredImage& image, ImageLayer layer) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out) throw InputError("cannot write " + path.string() + ": " + OIIO::geterror());
   Image pixels = layer == ImageLayer::Colour  ? image.colour
                  : layer == ImageLayer::Rings ? image.rings
                                               : image.growth;
   const bool growth = layer == ImageLayer::Growth;
-  OIIO::ImageSpec spec(pixels.width, pixels.height, pixels.channels,
-                       growth ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  PngWriteOptions options;
+  options.bits = growth ? 16 : 8;
+  options.pxPerMm = image.pxPerMm;
   std::string description = "Kerf " + imageLayerName(layer) + ", " + scaleText(image.pxPerMm);
+  std::string growthRange;
   if (growth) {  // 16-bit grey over the image's growth range (inside the block)
     float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
     for (std::size_t i = 0; i < pixels.pixels.size(); ++i) {
@@ -105,53 +115,37 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
     std::ostringstream range;
     range.precision(9);
     range << lo << " " << hi;
-    spec.attribute("Kerf:growth_range", range.str());
+    growthRange = range.str();
     description += ", growth in years = min + value * (max - min), Kerf:growth_range = min max";
   }
-  setScale(spec, image.pxPerMm, description);
-  // PNG keeps only text attributes (tEXt chunks); the scale itself is in pHYs (XResolution).
-  spec.attribute("Kerf:px_per_mm", floatText(image.pxPerMm));
-  spec.attribute("Kerf:mm_per_pixel", floatText(1.0f / image.pxPerMm));
-  spec.attribute("Kerf:layer", imageLayerName(layer));
-  check(out->open(temporary.string(), spec), *out, path);
-  check(out->write_image(OIIO::TypeDesc::FLOAT, pixels.pixels.data()), *out, path);
-  check(out->close(), *out, path);
+  // The scale is in pHYs; PNG keeps the rest as text chunks, under the keys OpenImageIO reads back.
+  options.text = {{"Software", "Kerf"},
+                  {"Description", description},
+                  {"Kerf:px_per_mm", floatText(image.pxPerMm)},
+                  {"Kerf:mm_per_pixel", floatText(1.0f / image.pxPerMm)},
+                  {"Kerf:layer", imageLayerName(layer)}};
+  if (growth) options.text.push_back({"Kerf:growth_range", growthRange});
+  writePngFile(temporary, pixels, options, path);
 }
 
 void writeTiff(const std::filesystem::path& path, const std::filesystem::path& temporary,
                const LayeredImage& image, bool extraLayers) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out) throw InputError("cannot write " + path.string() + ": " + OIIO::geterror());
-  const int w = image.colour.width, h = image.colour.height;
-  std::vector<OIIO::ImageSpec> specs;
-  specs.emplace_back(w, h, image.colour.channels, OIIO::TypeDesc::UINT16);
-  setScale(specs.back(), image.pxPerMm, "Kerf colour, " + scaleText(image.pxPerMm));
-  if (image.colour.channels == 4) specs.back().attribute("oiio:UnassociatedAlpha", 1);  // straight, as PNG
-  std::vector<const Image*> pages{&image.colour};
+  std::vector<OiioPage> pages{page(image.colour, "uint16", {})};
+  setScale(pages[0], image.pxPerMm, "Kerf colour, " + scaleText(image.pxPerMm));
+  if (image.colour.channels == 4) pages[0].intAttributes.push_back({"oiio:UnassociatedAlpha", 1});  // as PNG
   if (extraLayers) {
-    specs.emplace_back(w, h, 1, OIIO::TypeDesc::FLOAT);
-    specs.back().channelnames = {"growth"};
-    setScale(specs.back(), image.pxPerMm, "Kerf growth (years since the pith), " + scaleText(image.pxPerMm));
-    specs.emplace_back(w, h, 1, OIIO::TypeDesc::UINT16);
-    specs.back().channelnames = {"rings"};
-    setScale(specs.back(), image.pxPerMm, "Kerf rings (ring-line overlay), " + scaleText(image.pxPerMm));
-    pages.push_back(&image.growth);
-    pages.push_back(&image.rings);
+    OiioPage growth = page(image.growth, "float", {"growth"});
+    setScale(growth, image.pxPerMm, "Kerf growth (years since the pith), " + scaleText(image.pxPerMm));
+    OiioPage rings = page(image.rings, "uint16", {"rings"});
+    setScale(rings, image.pxPerMm, "Kerf rings (ring-line overlay), " + scaleText(image.pxPerMm));
+    pages.push_back(std::move(growth));
+    pages.push_back(std::move(rings));
   }
-  if (specs.size() > 1 && !out->supports("multiimage"))
-    throw InputError("this OpenImageIO cannot write multi-page TIFF");
-  check(out->open(temporary.string(), static_cast<int>(specs.size()), specs.data()), *out, path);
-  for (std::size_t s = 0; s < specs.size(); ++s) {
-    if (s > 0) check(out->open(temporary.string(), specs[s], OIIO::ImageOutput::AppendSubimage), *out, path);
-    check(out->write_image(OIIO::TypeDesc::FLOAT, pages[s]->pixels.data()), *out, path);
-  }
-  check(out->close(), *out, path);
+  writeWithOiio(path, temporary, pages);
 }
 
 void writeExr(const std::filesystem::path& path, const std::filesystem::path& temporary,
               const LayeredImage& image, const ImageWriteOptions& options) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out) throw InputError("cannot write " + path.string() + ": " + OIIO::geterror());
   // EXR holds scene-linear values with premultiplied alpha; Kerf's colours are sRGB-encoded and straight.
   Image linear = image.colour;
   for (std::size_t i = 0; i < linear.pixels.size(); i += linear.channels) {
@@ -159,27 +153,24 @@ void writeExr(const std::filesystem::path& path, const std::filesystem::path& te
     for (int c = 0; c < 3; ++c) linear.pixels[i + c] = srgbToLinear(linear.pixels[i + c]) * alpha;
   }
   const Image pixels = options.extraLayers ? interleave({&linear, &image.growth, &image.rings}) : linear;
-  const OIIO::TypeDesc colourType = options.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT;
-  OIIO::ImageSpec spec(pixels.width, pixels.height, pixels.channels, colourType);
-  spec.channelnames = {"R", "G", "B"};
+  const std::string colourType = options.exrHalf ? "half" : "float";
+  OiioPage exr = page(pixels, colourType, {"R", "G", "B"});
   if (linear.channels == 4) {
-    spec.channelnames.push_back("A");
-    spec.alpha_channel = 3;
+    exr.channelNames.push_back("A");
+    exr.alphaChannel = 3;
   }
-  spec.channelformats.assign(linear.channels, colourType);
+  exr.channelTypes.assign(linear.channels, colourType);
   if (options.extraLayers) {
-    spec.channelnames.push_back("growth");
-    spec.channelformats.push_back(OIIO::TypeDesc::FLOAT);  // years: half would blur the rings
-    spec.channelnames.push_back("rings");
-    spec.channelformats.push_back(colourType);
+    exr.channelNames.push_back("growth");
+    exr.channelTypes.push_back("float");  // years: half would blur the rings
+    exr.channelNames.push_back("rings");
+    exr.channelTypes.push_back(colourType);
   }
-  setScale(spec, image.pxPerMm,
+  setScale(exr, image.pxPerMm,
            "Kerf colour (linear)" + std::string(options.extraLayers ? ", growth (years), rings" : "") + ", " +
                scaleText(image.pxPerMm));
-  spec.attribute("compression", "zip");
-  check(out->open(temporary.string(), spec), *out, path);
-  check(out->write_image(OIIO::TypeDesc::FLOAT, pixels.pixels.data()), *out, path);
-  check(out->close(), *out, path);
+  exr.textAttributes.push_back({"compression", "zip"});
+  writeWithOiio(path, temporary, {exr});
 }
 
 }  // namespace
@@ -279,23 +270,32 @@ void writeLayeredImage(const std::filesystem::path& path, const LayeredImage& im
 }
 
 ExportedImageInfo readExportedImageInfo(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
   ExportedImageInfo info;
-  info.width = spec.width;
-  info.height = spec.height;
-  info.channels = spec.nchannels;
-  for (const std::string& name : spec.channelnames)
-    info.channelNames += (info.channelNames.empty() ? "" : ",") + name;
-  info.bitsPerChannel = spec.channelformat(0).c_str();
-  const std::string unit = spec.get_string_attribute("ResolutionUnit");
-  const float x = spec.get_float_attribute("XResolution", 0.0f);
-  info.dotsPerInch = unit == "cm" ? x * 2.54f : x;
-  const OIIO::ParamValue* mm = spec.find_attribute("Kerf:mm_per_pixel");
-  if (mm)
-    info.mmPerPixel = mm->type() == OIIO::TypeDesc::STRING ? std::stof(mm->get_string()) : mm->get_float();
-  while (in->seek_subimage(info.subimages, 0)) ++info.subimages;
+  if (hasPngSignature(path)) {
+    const PngInfo png = readPngInfo(path);
+    static const char* const kChannelNames[] = {"Y", "Y,A", "R,G,B", "R,G,B,A"};
+    info.width = png.header.width;
+    info.height = png.header.height;
+    info.channels = png.header.channels;
+    info.subimages = 1;
+    info.channelNames = info.channels >= 1 && info.channels <= 4 ? kChannelNames[info.channels - 1] : "";
+    info.bitsPerChannel = png.header.bits == 16 ? "uint16" : "uint8";
+    info.dotsPerInch = png.pixelsPerMetre * kMmPerInch / 1000.0f;
+    for (const PngText& text : png.text)
+      if (text.key == "Kerf:mm_per_pixel") info.mmPerPixel = std::strtof(text.value.c_str(), nullptr);
+    return info;
+  }
+  OiioFileInfo file;
+  const std::string error = oiioCodecs(path).readInfo(path.string(), file);
+  if (!error.empty()) throw InputError("cannot read image " + path.string() + ": " + error);
+  info.width = file.width;
+  info.height = file.height;
+  info.channels = file.channels;
+  info.subimages = file.subimages;
+  info.channelNames = file.channelNames;
+  info.bitsPerChannel = file.firstChannelType;
+  info.dotsPerInch = file.resolutionUnit == "cm" ? file.xResolution * 2.54f : file.xResolution;
+  info.mmPerPixel = file.mmPerPixel;
   return info;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Face and cut images at true scale, with the growth field and a ring-line overlay as extra layers, written
-// through OpenImageIO with their scale in the file (docs/export.md):
+// (PNG with libpng, TIFF and EXR with OpenImageIO) with their scale in the file (docs/export.md):
 //   PNG  8-bit, one layer per file (colour RGB / RGBA for cuts, rings grey; growth 16-bit grey scaled to
 //        the image's growth range, stored in the "Kerf:growth_range" text attribute);
 //   TIFF 16-bit colour, then one page per extra layer: growth as 32-bit float years, rings 16-bit grey;

@@ -6,7 +6,7 @@
 
 #include "export/part_writers.hpp"
 #include "io/atomic_file.hpp"
-#include "io/png_bytes.hpp"
+#include "io/png_codec.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -77,7 +77,7 @@ void writePartGlb(const std::filesystem::path& glbPath, const Mesh& mesh, const 
                                     mesh.triangles.size() * 3);
   }
 
-  const std::vector<unsigned char> png = encodePng(texture);
+  const std::vector<unsigned char> png = encodePngBytes(texture);
   tinygltf::Image image;
   image.name = "wood";
   image.mimeType = "image/png";

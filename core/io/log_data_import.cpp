@@ -134,24 +134,26 @@ LogModel importGranJson(const fs::path& folder, const LogImportOptions& options)
   // Before the smoothing, which would spread one wrong sample over its neighbours.
   checkPlausibleRadii(raw, stem.azimuths, radiiPath.string());
   if (options.smoothJsonRadii) {
-    // The maps' box blur: +-5 slices (clamped here at the ends) x +-2 degrees (periodic).
-    const int hz = 5, ha = std::max(1, stem.azimuths / 180);
-    stem.radii.resize(raw.size());
-    for (int i = 0; i < slices; ++i) {
-      for (int j = 0; j < stem.azimuths; ++j) {
+    // The maps' box blur: +-5 slices (clamped here at the ends) x +-2 degrees (periodic), separable:
+    // along the azimuth, then along the slices (16 reads per sample instead of 55).
+    const int hz = 5, ha = std::max(1, stem.azimuths / 180), n = stem.azimuths;
+    std::vector<double> across(raw.size());
+    for (int i = 0; i < slices; ++i)
+      for (int j = 0; j < n; ++j) {
         double sum = 0;
-        int count = 0;
-        for (int di = -hz; di <= hz; ++di) {
-          const int ii = std::clamp(i + di, 0, slices - 1);
-          for (int dj = -ha; dj <= ha; ++dj) {
-            const int jj = ((j + dj) % stem.azimuths + stem.azimuths) % stem.azimuths;
-            sum += raw[static_cast<std::size_t>(ii) * stem.azimuths + jj];
-            ++count;
-          }
-        }
-        stem.radii[static_cast<std::size_t>(i) * stem.azimuths + j] = static_cast<float>(sum / count);
+        for (int dj = -ha; dj <= ha; ++dj)
+          sum += raw[static_cast<std::size_t>(i) * n + ((j + dj) % n + n) % n];
+        across[static_cast<std::size_t>(i) * n + j] = sum;
       }
-    }
+    const double count = (2.0 * hz + 1) * (2.0 * ha + 1);
+    stem.radii.resize(raw.size());
+    for (int i = 0; i < slices; ++i)
+      for (int j = 0; j < n; ++j) {
+        double sum = 0;
+        for (int di = -hz; di <= hz; ++di)
+          sum += across[static_cast<std::size_t>(std::clamp(i + di, 0, slices - 1)) * n + j];
+        stem.radii[static_cast<std::size_t>(i) * n + j] = static_cast<float>(sum / count);
+      }
   } else {
     stem.radii = raw;
   }
