@@ -91,12 +91,7 @@ void AnnotationLayer::createActions() {
   toolAction_[static_cast<int>(tool_)]->setChecked(true);
 
   const auto make = [this](const QString& text, const QKeySequence& key, const QString& tip) {
-    auto* action = new QAction(text, this);
-    action->setShortcut(key);
-    action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    action->setToolTip(tip);
-    view_->addAction(action);
-    return action;
+    return makeEditAction(text, key, tip);
   };
   deleteAction_ = make(tr("Delete"), QKeySequence(Qt::Key_Delete),
                        tr("Delete the selected ring traces and knot marks (Del)"));
@@ -122,6 +117,16 @@ void AnnotationLayer::createActions() {
   connect(joinAction_, &QAction::triggered, this, &AnnotationLayer::joinSelection);
   connect(numberAction_, &QAction::triggered, this, &AnnotationLayer::askYearForSelection);
   connect(renumberAction_, &QAction::triggered, this, &AnnotationLayer::askYearOffsetForSelection);
+  createKnotActions();
+}
+
+QAction* AnnotationLayer::makeEditAction(const QString& text, const QKeySequence& key, const QString& tip) {
+  auto* action = new QAction(text, this);
+  action->setShortcut(key);
+  action->setShortcutContext(Qt::WidgetWithChildrenShortcut);  // while the faces view has the focus
+  action->setToolTip(tip);
+  view_->addAction(action);
+  return action;
 }
 
 QList<QAction*> AnnotationLayer::toolActions() const {
@@ -129,7 +134,8 @@ QList<QAction*> AnnotationLayer::toolActions() const {
 }
 
 QList<QAction*> AnnotationLayer::editActions() const {
-  return {deleteAction_, splitAction_, joinAction_, numberAction_, renumberAction_};
+  return {deleteAction_,   splitAction_,       joinAction_,        numberAction_,
+          renumberAction_, releaseKnotAction_, knotAccuracyAction_};
 }
 
 void AnnotationLayer::updateActions() {
@@ -139,6 +145,8 @@ void AnnotationLayer::updateActions() {
   numberAction_->setEnabled(!selectedTraces_.empty());
   renumberAction_->setEnabled(!selectedTraces_.empty());
   splitAction_->setEnabled(!annotations_.traces.empty());
+  releaseKnotAction_->setEnabled(!selectedKnots_.empty());
+  knotAccuracyAction_->setEnabled(!selectedKnots_.empty());
 }
 
 // --- State ---------------------------------------------------------------------------------------
@@ -349,6 +357,14 @@ void AnnotationLayer::shiftSelectionYears(int offset) {
            keep, selectedKnots_);
 }
 
+QInputDialog* AnnotationLayer::openDialog(const char* objectName, const QString& title) const {
+  auto* dialog = new QInputDialog(view_);  // non-blocking: tests and the user answer it later
+  dialog->setObjectName(objectName);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setWindowTitle(title);
+  return dialog;
+}
+
 void AnnotationLayer::askYearForSelection() {
   if (selectedTraces_.empty()) {
     emit message(tr("Select the traces to number first."));
@@ -358,10 +374,7 @@ void AnnotationLayer::askYearForSelection() {
   for (const RingTrace& t : annotations_.traces)
     if (t.year) suggestion = std::max(suggestion, *t.year + 1);
   if (const auto& first = annotations_.traces[selectedTraces_.front()]; first.year) suggestion = *first.year;
-  auto* dialog = new QInputDialog(view_);
-  dialog->setObjectName("annotationYearDialog");
-  dialog->setAttribute(Qt::WA_DeleteOnClose);
-  dialog->setWindowTitle(tr("Year Number"));
+  QInputDialog* dialog = openDialog("annotationYearDialog", tr("Year Number"));
   dialog->setInputMode(QInputDialog::IntInput);
   dialog->setIntRange(0, 254);
   dialog->setIntValue(std::min(suggestion, 254));
@@ -377,10 +390,7 @@ void AnnotationLayer::askYearOffsetForSelection() {
     emit message(tr("Select the numbered traces to renumber first."));
     return;
   }
-  auto* dialog = new QInputDialog(view_);
-  dialog->setObjectName("annotationYearOffsetDialog");
-  dialog->setAttribute(Qt::WA_DeleteOnClose);
-  dialog->setWindowTitle(tr("Shift Year Numbers"));
+  QInputDialog* dialog = openDialog("annotationYearOffsetDialog", tr("Shift Year Numbers"));
   dialog->setInputMode(QInputDialog::IntInput);
   dialog->setIntRange(-254, 254);
   dialog->setIntValue(1);
@@ -520,6 +530,7 @@ bool AnnotationLayer::mousePress(QMouseEvent* event) {
         const int id = annotations_.knots[*knot].knot;
         for (std::size_t k = 0; k < annotations_.knots.size(); ++k)
           if (annotations_.knots[k].knot == id) toggle(knots, k);
+        if (!shift) startKnotDrag(*knot, pos);
       } else if (const auto trace = traceAt(pos, kPickPx)) {
         toggle(traces, *trace);
       } else {
@@ -565,6 +576,10 @@ bool AnnotationLayer::mousePress(QMouseEvent* event) {
 bool AnnotationLayer::mouseMove(QMouseEvent* event) {
   const QPointF pos = event->position();
   cursor_ = pos;
+  if (draggedKnot_ && (event->buttons() & Qt::LeftButton)) {
+    moveKnotDrag(pos);
+    return true;
+  }
   if (stroking_ && draftFace_) {
     const glm::vec2 p = clampToFace(*draftFace_, pos);
     if (glm::length(p - draft_.back()) * pxPerMm(*draftFace_) >= 1.5) draft_.push_back(p);
@@ -575,6 +590,7 @@ bool AnnotationLayer::mouseMove(QMouseEvent* event) {
   if (hoverTrace != hoveredTrace_ || hoverKnot != hoveredKnot_) {
     hoveredTrace_ = hoverTrace;
     hoveredKnot_ = hoverKnot;
+    if (hoveredKnot_) emit message(knotMarkText(*hoveredKnot_));
     if (hoveredTrace_) {
       const RingTrace& t = annotations_.traces[*hoveredTrace_];
       emit message(tr("Ring trace on face %1%2%3, %4 mm long")
@@ -590,6 +606,10 @@ bool AnnotationLayer::mouseMove(QMouseEvent* event) {
 
 bool AnnotationLayer::mouseRelease(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton || view_->draggingSplit()) return false;
+  if (draggedKnot_) {
+    finishKnotDrag();
+    return true;
+  }
   if (stroking_) {
     finishFreehand();
     return true;
@@ -649,6 +669,7 @@ bool AnnotationLayer::keyPress(QKeyEvent* event) {
       }
       return false;
     case Qt::Key_Escape:
+      if (cancelKnotDrag()) return true;
       if (!draft_.empty()) {
         cancelDraft();
         emit message(tr("Trace cancelled."));
@@ -754,13 +775,23 @@ void AnnotationLayer::paintKnots(QPainter& painter) const {
     const QPointF p = toWidget(knots[k].face, knots[k].point);
     const bool selected = std::find(selectedKnots_.begin(), selectedKnots_.end(), k) != selectedKnots_.end();
     const qreal r = hoveredKnot_ == k ? 8 : 6.5;
+    // How far the fitted axis may pass from the mark (issue 19 item 1); a released mark holds nothing.
+    const qreal accuracyPx = knots[k].accuracyMm * pxPerMm(knots[k].face);
+    if (!knots[k].released && accuracyPx > r + 2) {
+      painter.setBrush(Qt::NoBrush);
+      painter.setPen(pen(kHalo, 2.5));
+      painter.drawEllipse(p, accuracyPx, accuracyPx);
+      painter.setPen(pen(kKnotColor, 1.2, Qt::DashLine));
+      painter.drawEllipse(p, accuracyPx, accuracyPx);
+    }
     painter.setPen(pen(selected ? Qt::white : QColor(0, 0, 0, 200), selected ? 3 : 1.5));
-    painter.setBrush(kKnotColor);
+    painter.setBrush(knots[k].released ? QBrush(Qt::NoBrush) : QBrush(kKnotColor));
     painter.drawEllipse(p, r, r);
     painter.setPen(pen(Qt::black, 1.2));
     painter.drawLine(p - QPointF(r * 0.5, 0), p + QPointF(r * 0.5, 0));
     painter.drawLine(p - QPointF(0, r * 0.5), p + QPointF(0, r * 0.5));
-    const QString label = tr("K%1").arg(knots[k].knot + 1);
+    const QString label =
+        knots[k].released ? tr("K%1 free").arg(knots[k].knot + 1) : tr("K%1").arg(knots[k].knot + 1);
     const QRectF box(p.x() + r + 2, p.y() - r - 12, 8 + 7 * label.size(), 15);
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(0, 0, 0, 170));

@@ -30,6 +30,7 @@
 #include "rings/annotations.hpp"
 
 class QActionGroup;
+class QInputDialog;
 class QKeyEvent;
 class QMouseEvent;
 class QPainter;
@@ -74,6 +75,11 @@ class AnnotationLayer : public QObject {
   // Asks for a year / an offset (non-blocking dialogs) and applies it.
   void askYearForSelection();
   void askYearOffsetForSelection();
+  // Knot marks (annotation_layer_knots.cpp): release the selected knots' marks, or hold them again when
+  // all are released; set their accuracy (mm); ask for it (non-blocking dialog).
+  void toggleReleaseOfSelectedKnots();
+  void setSelectedKnotAccuracy(float mm);
+  void askKnotAccuracyForSelection();
 
   // Traces are drawn (and picked) only while visible and while the view's overlay is visible
   // (View > Show Ring Traces).
@@ -112,6 +118,15 @@ class AnnotationLayer : public QObject {
   void finishFreehand();
   void cancelDraft();
   void placeKnotMark(QPointF widgetPos);
+  void startKnotDrag(std::size_t knot, QPointF widgetPos);
+  void moveKnotDrag(QPointF widgetPos);
+  void finishKnotDrag();
+  bool cancelKnotDrag();  // false when no drag was under way
+  QString knotMarkText(std::size_t knot) const;
+  void createKnotActions();
+  QAction* makeEditAction(const QString& text, const QKeySequence& key, const QString& tip);
+  QInputDialog* openDialog(const char* objectName,
+                           const QString& title) const;  // closed and deleted by itself
   void emitEdit(Annotations after, const QString& text, std::vector<std::size_t> selectTraces,
                 std::vector<std::size_t> selectKnots = {});
   std::optional<std::size_t> traceAt(QPointF widgetPos, qreal tolerancePx) const;
@@ -135,6 +150,13 @@ class AnnotationLayer : public QObject {
   bool stroking_ = false;         // freehand button held
   std::optional<QPointF> cursor_;
   std::optional<int> pendingKnot_;  // a knot with one mark so far
+  // A knot mark being dragged (Select): which, where it was, where the press was, whether it moved.
+  std::optional<std::size_t> draggedKnot_;
+  glm::vec2 draggedKnotFrom_{0.0f};
+  QPointF knotPress_;
+  bool knotMoved_ = false;
+  QAction* releaseKnotAction_ = nullptr;
+  QAction* knotAccuracyAction_ = nullptr;
   // Rubber band.
   std::optional<QPointF> bandStart_;
   QRectF band_;

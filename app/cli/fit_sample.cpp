@@ -49,6 +49,13 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
       "or nara (kerf-cli params --presets lists them). Default: a sample folder named by its "
       "Mokume code (CN03) gets that species; a project keeps its own wood; 'none' keeps the "
       "defaults");
+  cli::addNumber(command, "--knot-mark-accuracy", o.knotMarkAccuracy,
+                 "mm: how closely the fitted knots must pass through their marks (every mark; kept in the "
+                 "project). Default: each mark's own, 1 mm unless set",
+                 0.05, 50.0);
+  command->add_flag("--release-knot-marks", o.releaseKnotMarks,
+                    "Let the rings place the knots: the knot marks only tell where to start (kept in the "
+                    "project)");
   addHoldOutFaceOption(command, o.holdOut);
   cli::addNumber(command, "--uncertainty", o.uncertaintyRefits,
                  "Also say how sure the fit is inside the block: refit the field N times on resampled ring "
@@ -125,7 +132,13 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   GrowthFieldFitInput input;
   input.heldOut = heldOut;  // the fit drops whatever of these faces is below (fit/held_out_faces.hpp)
   if (!o.ignoreTraces) input.traces = project.annotations.traces;
-  input.knotMarks = project.annotations.knots;  // knots of the field (Mokume Sec. 5.2.4)
+  // Knots of the field (Mokume Sec. 5.2.4), held by their marks (issue 19 item 1); what the options say
+  // about the marks is kept with them.
+  for (KnotMark& mark : project.annotations.knots) {
+    if (o.knotMarkAccuracy > 0) mark.accuracyMm = static_cast<float>(o.knotMarkAccuracy);
+    if (o.releaseKnotMarks) mark.released = true;
+  }
+  input.knotMarks = project.annotations.knots;
   // Photos: the anatomical prior (fit/anatomy_prior.hpp), the colours, and the rings where there is no
   // ring image. A held-out face's photo is not even read.
   for (FaceId face : kAllFaces) {

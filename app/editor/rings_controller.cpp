@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QFileInfo>
 #include <QPolygonF>
+#include <QTimer>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -22,8 +23,18 @@ namespace kerf {
 RingsController::RingsController(const EditorContext& context, FacesController* faces, FacesView* facesView,
                                  AnnotationLayer* annotationLayer)
     : EditorController(context), faces_(faces), facesView_(facesView), annotationLayer_(annotationLayer) {
+  knotRefitTimer_ = new QTimer(this);
+  knotRefitTimer_->setSingleShot(true);
+  knotRefitTimer_->setInterval(300);
+  connect(knotRefitTimer_, &QTimer::timeout, this, &RingsController::refitKnots);
+  // The user's edits (not undo and redo, which must not push a step of their own): an edit of the knot
+  // marks refits the knots.
   connect(annotationLayer_, &AnnotationLayer::edited, this,
-          [this](const Annotations& after, const QString& text) { document_->editAnnotations(after, text); });
+          [this](const Annotations& after, const QString& text) {
+            const bool knotMarksEdited = after.knots != document_->annotations().knots;
+            document_->editAnnotations(after, text);
+            if (knotMarksEdited) knotRefitTimer_->start();
+          });
   connect(document_, &Document::annotationsChanged, this, &RingsController::annotationsChanged);
   // The detection belonged to the photos that were there.
   connect(document_, &Document::photosChanged, this, &RingsController::clearRingDetection);
@@ -31,6 +42,8 @@ RingsController::RingsController(const EditorContext& context, FacesController* 
   connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { ringJobEnded(id, {}); });
   connect(jobs_, &JobRunner::jobFailed, this, &RingsController::uncertaintyJobEnded);
   connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { uncertaintyJobEnded(id, {}); });
+  connect(jobs_, &JobRunner::jobFailed, this, &RingsController::knotRefitJobEnded);
+  connect(jobs_, &JobRunner::jobCancelled, this, [this](int id) { knotRefitJobEnded(id, {}); });
 }
 
 void RingsController::setActions(const Actions& actions) {

@@ -13,6 +13,7 @@
 #include "fit_job.hpp"
 
 class QAction;
+class QTimer;
 
 namespace kerf {
 
@@ -46,6 +47,11 @@ class RingsController : public EditorController {
   void estimateUncertainty();
   bool isEstimatingUncertainty() const;
   void cancelUncertainty();
+  // The knots follow their marks (rings_knot_refit.cpp; issue 19 item 1): after the user moves, releases
+  // or re-weighs a knot mark on the last fit's field, the knot stage alone runs again in the background
+  // (a second or two) and its knots replace the field's as one undo step. Called a moment after the edit.
+  void refitKnots();
+  bool isRefittingKnots() const;
   // The annotations as Mokume images into `folder` (asked for when empty). Returns false (with a
   // message) when nothing was written.
   bool exportAnnotations(QString folder = {});
@@ -70,6 +76,8 @@ class RingsController : public EditorController {
   void fitPreviewed();
   // How sure the fit is has been estimated and is the document's (Document::ringUncertainty).
   void fitUncertaintyEstimated();
+  // The knots were fitted again to their edited marks and are the document's.
+  void knotsRefitted();
   // Either of them failed (the message is also in the log and a message box) or was cancelled.
   void ringJobFailed(const QString& message);
 
@@ -81,12 +89,14 @@ class RingsController : public EditorController {
   void applyDetectedTraces(const RingDetection& detection);  // rings_traces.cpp
   void annotationsChanged();
   void uncertaintyJobEnded(int id, const QString& message);  // rings_uncertainty.cpp
+  void knotRefitJobEnded(int id, const QString& message);    // rings_knot_refit.cpp
 
   FacesController* faces_;
   FacesView* facesView_;
   AnnotationLayer* annotationLayer_;
   Actions actions_{};
-  int ringJob_ = 0, fitJob_ = 0, uncertaintyJob_ = 0;
+  int ringJob_ = 0, fitJob_ = 0, uncertaintyJob_ = 0, knotRefitJob_ = 0;
+  QTimer* knotRefitTimer_ = nullptr;  // a refit starts when the marks have been still a moment
   std::shared_ptr<const RingDetection> ringDetection_;
   std::shared_ptr<const GrowthFitResult> lastFit_;  // for the other pith candidate
 };

@@ -105,6 +105,30 @@ struct JointFarResidual {
 
 // Keeps the knot's direction vector at unit length and its origin from sliding along the axis
 // unconstrained (moving it along the axis outside the block changes nothing: a gauge freedom).
+// Issue 19 item 1: a mark the user placed holds the knot's axis within its accuracy. Inside 90 % of the
+// accuracy the mark costs next to nothing, so there the contours place the axis; beyond, the cost rises so
+// steeply (weighted by sqrt(the knot's contour points), each of whose soft-L1 costs stays far below 1)
+// that no gain on the contours can carry the axis past the accuracy.
+struct MarkResidual {
+  glm::vec3 mark;
+  double freeMm;  // 0.9 x the mark's accuracy
+  double weight;  // 10 sqrt(near points) / accuracy, per mm beyond freeMm
+  template <typename T>
+  bool operator()(const T* knot, T* residual) const {
+    using std::sqrt;
+    const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
+    const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
+    // A hinge with a rounded knee (quadratic over the first 10 % of the free distance): exactly zero
+    // inside, and Levenberg-Marquardt does not crawl along its corner as it did along a sharp one.
+    const T beyond = knotAxisDistance(knot, direction, mark) - T(freeMm);
+    const T knee(0.1 * freeMm);
+    residual[0] = beyond <= T(0)  ? T(0)
+                  : beyond < knee ? T(weight) * beyond * beyond / (T(2) * knee)
+                                  : T(weight) * (beyond - T(0.5) * knee);
+    return true;
+  }
+};
+
 struct KnotGauge {
   glm::dvec3 origin0;
   template <typename T>
@@ -273,6 +297,11 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
   std::vector<int> nearCount(initial.size(), 0);
   for (int k : nearKnot)
     if (k >= 0) ++nearCount[k];
+  // Every stride-th near point of a knot is fitted (options.maxNearPoints); `fittedNear` counts them.
+  std::vector<int> stride(initial.size(), 1), seen(initial.size(), 0), fittedNear(initial.size(), 0);
+  if (options.maxNearPoints > 0)
+    for (std::size_t k = 0; k < initial.size(); ++k)
+      stride[k] = std::max(1, (nearCount[k] + options.maxNearPoints - 1) / options.maxNearPoints);
 
   // Parameters: per knot origin (3), direction (3), log speed; the shared k_stem; a level per contour.
   std::vector<std::array<double, 7>> knotParams(initial.size());
@@ -306,6 +335,8 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     levels[c] = lowerMedian(merged);
     for (int i : near) {
       const int k = nearKnot[i];
+      if (seen[k]++ % stride[k] != 0) continue;
+      ++fittedNear[k];
       if (freePith) {
         auto* cost = new ceres::AutoDiffCostFunction<JointNearResidual, 1, 6, 7, 1, 1>(
             new JointNearResidual{contours.points[i], ringWidth, &settings});
@@ -346,6 +377,14 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     const glm::dvec3 origin0(knotParams[k][0], knotParams[k][1], knotParams[k][2]);
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<KnotGauge, 4, 7>(new KnotGauge{origin0}),
                              nullptr, knotParams[k].data());
+    for (const KnotMark& m : byId[e.id]) {
+      if (m.released) continue;
+      const double accuracy = std::max(0.05f, m.accuracyMm);
+      const double weight = 10.0 * std::sqrt(std::max(1, fittedNear[k])) / accuracy;
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MarkResidual, 1, 7>(new MarkResidual{
+                                   faceMmToBlock(block, m.face, m.point), 0.9 * accuracy, weight}),
+                               nullptr, knotParams[k].data());
+    }
     problem.SetParameterLowerBound(knotParams[k].data(), 6, std::log(kMinSpeed));
     problem.SetParameterUpperBound(knotParams[k].data(), 6, std::log(maxSpeed));
     e.optimized = true;
@@ -413,6 +452,16 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     BlockKnotFitEntry& e = out.entries[entryOf[k]];
     e.fitted = fitted[k];
     e.axisMovedDeg = angleDeg(initial[k].direction, fitted[k].direction);
+    for (const KnotMark& m : byId[e.id]) {
+      const float d = knotAxisDistance(&fitted[k].origin.x, &fitted[k].direction.x,
+                                       faceMmToBlock(block, m.face, m.point));
+      if (m.released) {
+        ++e.releasedMarks;
+      } else {
+        e.markDistanceMm = std::max(e.markDistanceMm, static_cast<double>(d));
+        e.marksHeld = e.marksHeld && d <= m.accuracyMm;
+      }
+    }
     std::vector<bool> near(n);
     for (int c = 0; c < contours.count(); ++c)
       for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i)

@@ -11,7 +11,8 @@
 // stem field G fixed (after the distortion stage), Ceres (Levenberg-Marquardt, automatic
 // differentiation, soft-L1) moves each knot's origin, direction and growth speed, the shared stem-side
 // smoothness knots.k_stem (the paper's s) and a free level per contour, on the iso-contour loss (Eq. 2)
-// of the contours that come near a knot. Deterministic (one thread).
+// of the contours that come near a knot. Deterministic (one thread). The marks are constraints (issue 19
+// item 1): each holds the axis within its accuracyMm, unless the user released it.
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct BlockKnotFitOptions {
   // sharply, which the coarse growth-rate grid of the distortion stage cannot follow.
   float lossKnotRadii = 3.0f;
   int minNearPoints = 20;  // fewer near points over all contours: the knot is kept at its initial axis
+  // More near points than this for one knot: every n-th is fitted (0: all). The editor's live refit
+  // (fit/knot_refit.hpp) uses it; its detected traces carry 3-4 times the points of the contours.
+  int maxNearPoints = 0;
   bool fitSmoothness = true;
   // Knots to start from instead of the axes of the marks (matched by id), e.g. those fitted on the
   // undeformed field before the distortion stage.
@@ -48,7 +52,12 @@ struct BlockKnotFitEntry {
   bool optimized = false;     // Ceres moved it
   std::string note;           // how it was initialised, or why it was skipped / not optimised
   BlockKnot initial, fitted;
-  double axisMovedDeg = 0;           // angle between the initial and the fitted direction
+  double axisMovedDeg = 0;  // angle between the initial and the fitted direction
+  // Issue 19 item 1: the fitted axis's largest distance from the marks that hold it (not released), and
+  // whether it is within each one's accuracy.
+  double markDistanceMm = 0;
+  bool marksHeld = true;
+  int releasedMarks = 0;
   int contours = 0, nearPoints = 0;  // contours and points fitted near the knot
   int lossPoints = 0;                // points within lossKnotRadii
   // Iso-contour error of the points within lossKnotRadii (mean |G - contour median|, ring spacings =

@@ -169,6 +169,25 @@ RingLevelEstimate ringLevelsFromNumberedContours(const IsoContours& contours, co
 
 }  // namespace
 
+IsoContours sampleContours(const GrowthFieldFitInput& input, const Block& block,
+                           GrowthFieldFitReport* report) {
+  IsoContours contours;
+  for (FaceId face : kAllFaces) {
+    const GrayImage8& image = input.rings[faceIndex(face)];
+    if (image.empty() || !input.contoursFromImages) continue;
+    const auto pixels = extractIsoContours(image);
+    addFaceContours(contours, block, face, {image.width, image.height}, pixels);
+    if (report) report->contoursPerFace[faceIndex(face)] = static_cast<int>(pixels.size());
+  }
+  const int imageContours = contours.count();
+  addTraceContours(contours, block, input.traces);
+  if (report) {
+    report->tracesUsed = contours.count() - imageContours;
+    report->numberedTraces = contours.numberedContours();
+  }
+  return contours;
+}
+
 GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, const Block& block,
                                             const WoodParameters& current,
                                             const GrowthFieldFitOptions& options, const Progress& progress) {
@@ -182,18 +201,8 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   GrowthFieldFitResult out;
   GrowthFieldFitReport& report = out.report;
   const Stopwatch extractClock;
-  IsoContours contours;
-  for (FaceId face : kAllFaces) {
-    const GrayImage8& image = input.rings[faceIndex(face)];
-    if (image.empty() || !input.contoursFromImages) continue;
-    const auto pixels = extractIsoContours(image);
-    addFaceContours(contours, block, face, {image.width, image.height}, pixels);
-    report.contoursPerFace[faceIndex(face)] = static_cast<int>(pixels.size());
-  }
-  const int imageContours = contours.count();
-  addTraceContours(contours, block, input.traces);
-  report.tracesUsed = contours.count() - imageContours;
-  report.numberedTraces = contours.numberedContours();
+  IsoContours contours = sampleContours(input, block, &report);
+  const int imageContours = contours.count() - report.tracesUsed;
   if (options.resampleContoursSeed) contours = resampledContours(contours, *options.resampleContoursSeed);
   report.extractSeconds = extractClock.seconds();
   if (contours.count() < options.minContours || contours.facesWithContours() < options.minFaces)
@@ -532,6 +541,18 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
                "V = (%.4f, %.4f, %.4f), speed %.3f, axis moved %.2f deg by the fit",
                k.id, faces.c_str(), k.note.c_str(), b.origin.x, b.origin.y, b.origin.z, b.direction.x,
                b.direction.y, b.direction.z, b.speed, k.axisMovedDeg));
+    // Issue 19 item 1: how the marks held it.
+    if (k.releasedMarks < k.marks) {
+      std::string held =
+          format("  knot %d's axis passes %.2f mm from its farthest mark%s", k.id, k.markDistanceMm,
+                 k.marksHeld ? " (within every mark's accuracy)" : " (OUTSIDE a mark's accuracy)");
+      if (k.releasedMarks > 0)
+        held += format("; %d mark(s) released, only seeding the knot", k.releasedMarks);
+      lines.push_back(held);
+    } else {
+      lines.push_back(format("  knot %d: its %d mark(s) released, only seeding it: the rings placed the knot",
+                             k.id, k.releasedMarks));
+    }
     lines.push_back(
         format("  iso-contour error near knot %d (%d points within 3 knot radii; %d points on %d "
                "contours fitted): %.4f without a knot, %.4f initial, %.4f fitted (ring spacings)",

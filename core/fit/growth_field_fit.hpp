@@ -148,6 +148,11 @@ struct GrowthFieldFitResult {
   std::vector<BlockKnot> knots;           // the knots of the field (Project::knots)
 };
 
+// The contours a fit of `input` fits: the iso-contours of its ring images (held-out faces are the
+// caller's business) and its traces; fills the report's contour counts when given one.
+IsoContours sampleContours(const GrowthFieldFitInput& input, const Block& block,
+                           GrowthFieldFitReport* report = nullptr);
+
 // Throws InputError when there is nothing to fit (see minContours), Cancelled on request.
 GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, const Block& block,
                                             const WoodParameters& current,

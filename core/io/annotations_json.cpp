@@ -64,9 +64,12 @@ json annotationsToJson(const Annotations& annotations) {
     traces.push_back(std::move(t));
   }
   json knots = json::array();
-  for (const KnotMark& mark : annotations.knots)
-    knots.push_back(
-        {{"knot", mark.knot}, {"face", faceName(mark.face)}, {"point", {mark.point.x, mark.point.y}}});
+  for (const KnotMark& mark : annotations.knots) {
+    json k = {{"knot", mark.knot}, {"face", faceName(mark.face)}, {"point", {mark.point.x, mark.point.y}}};
+    if (mark.accuracyMm != kDefaultKnotMarkAccuracyMm) k["accuracy_mm"] = mark.accuracyMm;
+    if (mark.released) k["released"] = true;
+    knots.push_back(std::move(k));
+  }
   return {{"units", "face_mm"}, {"traces", std::move(traces)}, {"knots", std::move(knots)}};
 }
 
@@ -128,6 +131,18 @@ Annotations annotationsFromJson(const json& in, const Block& block) {
       }
       mark.face = readFace(k["face"], what + ".face");
       mark.point = readPoint(k["point"], what + ".point", block, mark.face);
+      if (k.contains("accuracy_mm")) {
+        const json& a = k["accuracy_mm"];
+        if (!a.is_number() || !(a.get<double>() >= 0.05) || !(a.get<double>() <= 50.0))
+          throw InputError(what + ".accuracy_mm must be a number of mm from 0.05 to 50, got " +
+                           describeJson(a));
+        mark.accuracyMm = static_cast<float>(a.get<double>());
+      }
+      if (k.contains("released")) {
+        if (!k["released"].is_boolean())
+          throw InputError(what + ".released must be true or false, got " + describeJson(k["released"]));
+        mark.released = k["released"].get<bool>();
+      }
       out.knots.push_back(mark);
     }
   }

@@ -4,9 +4,11 @@
 //
 //   {"units": "face_mm",
 //    "traces": [{"face": "A", "points": [[u, v], ...], "year": 3, "origin": "drawn"}, ...],
-//    "knots":  [{"knot": 0, "face": "C", "point": [u, v]}, ...]}
+//    "knots":  [{"knot": 0, "face": "C", "point": [u, v], "accuracy_mm": 1, "released": false}, ...]}
 //
-// "year" is optional (an unnumbered trace); "origin" is "drawn" or "detected" (default "drawn").
+// "year" is optional (an unnumbered trace); "origin" is "drawn" or "detected" (default "drawn"); a knot
+// mark's "accuracy_mm" (0.05-50, default 1) and "released" (default false) are written only when not
+// the default.
 // Points are face millimetres (docs/coordinates.md, "Annotations").
 #include <nlohmann/json_fwd.hpp>
 

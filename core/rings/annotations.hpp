@@ -45,11 +45,15 @@ struct RingTrace {
 };
 
 // Where a knot meets a face. A knot usually crosses the block: it has two marks (where it enters and
-// where it leaves), on two faces, sharing the knot id.
+// where it leaves), on two faces, sharing the knot id. The fit keeps the knot's axis within accuracyMm of
+// each mark (issue 19 item 1) unless the user released the mark, which then only seeds the knot.
+inline constexpr float kDefaultKnotMarkAccuracyMm = 1.0f;
 struct KnotMark {
   int knot = 0;  // knot id: marks with the same id are the same knot
   FaceId face = FaceId::A;
   glm::vec2 point{0.0f};  // face mm
+  float accuracyMm = kDefaultKnotMarkAccuracyMm;
+  bool released = false;
 
   bool operator==(const KnotMark&) const = default;
 };

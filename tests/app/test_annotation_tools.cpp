@@ -41,6 +41,7 @@ class TestAnnotationTools : public QObject {
   void drawsFreehandSmoothly();
   void marksAKnotOnTwoFaces();
   void rubberBandSelectsAndDeleteRemoves();
+  void dragsReleasesAndWeighsKnotMarks();
   void detectedRingsBecomeTracesInOneStep();
   void savesAndReopensTheAnnotations();
   void savesScreenshots();
@@ -288,6 +289,66 @@ void TestAnnotationTools::rubberBandSelectsAndDeleteRemoves() {
   checkUndoRedo(withKnot);
   undo()->undo();  // keep the knot for the file round trip
   QCOMPARE(annotations().knots.size(), 2u);
+}
+
+// Issue 19 item 1: a knot mark is dragged to where the knot really comes out, released (R) so that the
+// rings place the knot, given an accuracy (M); each is one undo step, drawn as it is.
+void TestAnnotationTools::dragsReleasesAndWeighsKnotMarks() {
+  key(Qt::Key_V);
+  const Annotations before = annotations();
+  QCOMPARE(before.knots.size(), 2u);
+  QCOMPARE(before.knots[0].face, FaceId::C);
+  QVERIFY(!before.knots[0].released);
+  QCOMPARE(before.knots[0].accuracyMm, kDefaultKnotMarkAccuracyMm);
+
+  QTest::mousePress(view(), Qt::LeftButton, {}, at(FaceId::C, 0.3, 0.75));
+  QTest::mouseMove(view(), at(FaceId::C, 0.4, 0.6));
+  QTest::mouseMove(view(), at(FaceId::C, 0.5, 0.5));
+  QTest::mouseRelease(view(), Qt::LeftButton, {}, at(FaceId::C, 0.5, 0.5));
+  QCOMPARE(annotations().knots.size(), 2u);
+  const glm::vec2 faceMm = faceSizeMm(window_->document()->project().block, FaceId::C);
+  QVERIFY(glm::length(annotations().knots[0].point - 0.5f * faceMm) < 0.5f);
+  QCOMPARE(annotations().knots[1], before.knots[1]);  // the other mark stays
+  checkUndoRedo(before);
+  QCOMPARE(layer()->selectedKnots().size(), 2u);  // the dragged knot stays selected
+
+  // A click without moving only selects; Esc during a drag puts the mark back.
+  const Annotations moved = annotations();
+  QTest::mousePress(view(), Qt::LeftButton, {}, at(FaceId::C, 0.5, 0.5));
+  QTest::mouseMove(view(), at(FaceId::C, 0.7, 0.3));
+  key(Qt::Key_Escape);
+  QTest::mouseRelease(view(), Qt::LeftButton, {}, at(FaceId::C, 0.7, 0.3));
+  QCOMPARE(annotations(), moved);
+  QTest::mouseClick(view(), Qt::LeftButton, {}, at(FaceId::C, 0.5, 0.5));
+  QCOMPARE(annotations(), moved);
+  QCOMPARE(layer()->selectedKnots().size(), 2u);
+
+  key(Qt::Key_R);
+  QVERIFY(annotations().knots[0].released && annotations().knots[1].released);
+  checkUndoRedo(moved);
+  const Annotations released = annotations();
+  key(Qt::Key_R);  // all released: R holds them again
+  QVERIFY(!annotations().knots[0].released && !annotations().knots[1].released);
+  checkUndoRedo(released);
+
+  key(Qt::Key_M);
+  QInputDialog* dialog = nullptr;
+  QTRY_VERIFY((dialog = view()->findChild<QInputDialog*>("knotAccuracyDialog")) != nullptr);
+  QCOMPARE(dialog->doubleValue(), double(kDefaultKnotMarkAccuracyMm));
+  dialog->setDoubleValue(2.5);
+  dialog->accept();
+  QTRY_VERIFY(view()->findChild<QInputDialog*>("knotAccuracyDialog") == nullptr);
+  QCOMPARE(annotations().knots[0].accuracyMm, 2.5f);
+  QCOMPARE(annotations().knots[1].accuracyMm, 2.5f);
+  QVERIFY(QDir().mkpath(KERF_TEST_ARTIFACTS_DIR));
+  view()->setZoom(3.0, at(FaceId::C, 0.5, 0.5));
+  QTest::qWait(50);
+  QVERIFY(view()->grab().toImage().save(artifact("annotation_knot_accuracy")));  // the circles, to look at
+  view()->fitToView();
+
+  // Back to the marks as they were, for the tests that follow.
+  for (int steps = 0; steps < 8 && annotations() != before; ++steps) undo()->undo();
+  QCOMPARE(annotations(), before);
 }
 
 void TestAnnotationTools::detectedRingsBecomeTracesInOneStep() {

@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "io/annotations_json.hpp"
 #include "io/image.hpp"
 #include "io/mokume_annotation_files.hpp"
 #include "rings/annotations.hpp"
@@ -337,5 +339,33 @@ TEST(Annotations, UnreadableAnnotationImageNamesTheFile) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("B_ann.png"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Annotations, KnotMarkAccuracyAndReleaseRoundTripThroughJson) {
+  const Block block;
+  Annotations a;
+  a.knots = {{3, FaceId::C, {12.0f, 30.0f}}, {3, FaceId::F, {25.0f, 8.0f}, 2.5f, true}};
+  const nlohmann::json json = annotationsToJson(a);
+  // Defaults are not written, so files without these keys stay as they were.
+  EXPECT_FALSE(json["knots"][0].contains("accuracy_mm"));
+  EXPECT_FALSE(json["knots"][0].contains("released"));
+  EXPECT_EQ(json["knots"][1]["accuracy_mm"], 2.5);
+  EXPECT_EQ(json["knots"][1]["released"], true);
+  EXPECT_EQ(annotationsFromJson(json, block).knots, a.knots);
+
+  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{{"accuracy_mm", 0.0},
+                                                                                      {"accuracy_mm", -1.0},
+                                                                                      {"accuracy_mm", 80.0},
+                                                                                      {"accuracy_mm", "1"},
+                                                                                      {"released", 1}}) {
+    nlohmann::json bad = json;
+    bad["knots"][0][key] = value;
+    try {
+      annotationsFromJson(bad, block);
+      ADD_FAILURE() << key << " = " << value.dump() << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("annotations.knots[0]." + key), std::string::npos) << e.what();
+    }
   }
 }
