@@ -1,0 +1,171 @@
+#pragma once
+// One block of the knot test bed end to end (issue 19 item 3; docs/knots.md, "A knot test bed cut from
+// the spruce log"): cut from the log (log_cut_blocks.hpp), its faces rendered as photos
+// (log_block_photos.hpp), the knot marks set where the true knot axes meet the faces, then Kerf's own
+// pipeline as `kerf-cli fit` runs it: ring detection on the photos (rings/detect_block_rings.hpp) and the
+// whole growth-field fit with the knots from the marks (fit/growth_field_fit.hpp, Mokume Sec. 5.2 and
+// 5.2.4). The fit sees the photos, the block's size and the marks only; where the block lies in the log
+// is known to the comparison alone (knot_fit_truth.hpp). Shared by bench/knot_log_testbed.cpp and
+// tests/core/test_knot_log_bed.cpp.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "field/block_knots.hpp"
+#include "field/growth_field.hpp"
+#include "field/knot_field.hpp"
+#include "fit/growth_field_fit.hpp"
+#include "image/gray_image.hpp"
+#include "knot_fit_truth.hpp"
+#include "log_block_photos.hpp"
+#include "log_cut_blocks.hpp"
+#include "params/parameter_schema.hpp"
+#include "rings/detect_block_rings.hpp"
+#include "util/resource_usage.hpp"
+
+namespace kerf::testing {
+
+struct BedRunOptions {
+  BlockPhotoOptions photos;
+  float cutStepMm = 0.1f;  // grid of the hidden cut
+  bool withoutMarks = true;  // also fit with no marks, the reference the knot fit should beat on the cut
+};
+
+// One knot of a block, fitted against the truth.
+struct BedKnotResult {
+  int knot = 0;                        // log index (also its marks' id)
+  bool deadInBlock = false;            // the true knot is dead somewhere in the block
+  bool fitted = false;                 // the fit returned a knot for its marks
+  std::array<FaceId, 2> faces{};       // the marked faces (entry, exit)
+  double faceAngleDeg = 0;             // true axis against the entry face's normal
+  double axisDeg = 0;                  // fitted axis against the true one (the chord between the marks)
+  std::array<double, 2> offsetMm{};    // fitted axis against the mark, on each marked face's plane
+  std::array<double, 2> trueDiameterMm{}, fittedDiameterMm{};
+  CutRingErrors cut, cutWithoutMarks;  // rings on the hidden cut along this knot
+};
+
+struct BedBlockResult {
+  BedBlockSpec spec;
+  bool withDeath = true;  // the log as measured; false: the block's knots alive to the bark
+  Board board;
+  int contours = 0;
+  std::vector<BedKnotResult> knots;
+  double fitSeconds = 0;
+  std::string note;  // why something is missing
+};
+
+// The fitted field of a whole fit: its stem and its knots (Mokume Eq. 7, Eq. 6).
+struct FittedBlockField {
+  GrowthField stem;
+  BlockKnots knots;
+  explicit FittedBlockField(const GrowthFieldFitResult& fit)
+      : stem(fit.params, *fit.rates),
+        knots(fit.knots, KnotSettings::fromParameters(fit.params), fit.params.ringWidth) {}
+  float operator()(const glm::vec3& p) const {
+    const Cylindrical c = stem.axis().toCylindrical(p);
+    return knots.merge(p, stem.evaluate(c), c.radius).time;
+  }
+};
+
+inline GrowthFieldFitResult fitBedPhotos(const std::array<Image, 6>& photos, const BlockRingDetection& rings,
+                                         const Block& block, const std::vector<KnotMark>& marks) {
+  GrowthFieldFitInput input;
+  for (int i = 0; i < 6; ++i) {
+    input.photos[i] = photos[i];
+    if (rings.faces[i]) input.rings[i] = toGray8(rings.faces[i]->arl);
+  }
+  input.knotMarks = marks;
+  GrowthFieldFitOptions options;
+  options.minContours = kMinFitContours;
+  options.minFaces = kMinFitFaces;
+  return fitGrowthFieldToSample(input, block, WoodParameters{}, options);
+}
+
+inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& spec, bool withDeath,
+                                  const BedRunOptions& options = {}) {
+  BedBlockResult out;
+  out.spec = spec;
+  out.withDeath = withDeath;
+  out.board = placeBedBlock(measured, spec);
+  const LogModel log = withDeath ? measured : withoutDeaths(measured, spec.knots);
+  const WoodParameters defaults;
+  const KnotField field(log, KnotSettings::fromParameters(defaults));
+  const WoodColorMap colours = log.colorMap.empty()
+                                   ? woodColorMapFromParameters(defaults, log.stem.maxRadius())
+                                   : log.colorMap;
+  const Block block = out.board.block();
+  const std::array<Image, 6> photos = renderLogBlockFaces(field, colours, out.board, options.photos);
+  const BlockRingDetection rings = detectBlockRings(photos, block);
+  out.contours = rings.contourCount();
+
+  std::vector<KnotMark> marks;
+  std::vector<std::vector<AxisCrossing>> crossings;
+  for (int k : spec.knots) {
+    crossings.push_back(axisCrossings(log, k, out.board));
+    for (const KnotMark& m : knotMarksAtCrossings(log, k, out.board)) marks.push_back(m);
+  }
+  const Stopwatch clock;
+  const GrowthFieldFitResult fit = fitBedPhotos(photos, rings, block, marks);
+  out.fitSeconds = clock.seconds();
+  std::optional<GrowthFieldFitResult> plain;
+  if (options.withoutMarks) plain = fitBedPhotos(photos, rings, block, {});
+
+  // The truth in the block frame, with only the knots that can reach the block (the rest change nothing).
+  std::vector<int> reaching;
+  {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    const glm::vec3 h = block.halfSize();
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec3 p =
+          out.board.toLog(glm::vec3((c & 1) ? h.x : -h.x, (c & 2) ? h.y : -h.y, (c & 4) ? h.z : -h.z));
+      lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    field.cull(lo, hi, field.allKnots(), reaching);
+  }
+  const ScalarField truth = [&](const glm::vec3& q) { return field.evaluate(out.board.toLog(q), reaching).time; };
+  const FittedBlockField fitted(fit);
+  std::optional<FittedBlockField> fittedPlain;
+  if (plain) fittedPlain.emplace(*plain);
+
+  for (std::size_t i = 0; i < spec.knots.size(); ++i) {
+    const int k = spec.knots[i];
+    const std::vector<AxisCrossing>& c = crossings[i];
+    BedKnotResult r;
+    r.knot = k;
+    if (c.size() != 2) {
+      out.note += "knot " + std::to_string(k) + " does not cross the block twice; ";
+      out.knots.push_back(r);
+      continue;
+    }
+    r.faces = {c[0].face, c[1].face};
+    r.deadInBlock = log.knots[k].deathDistance < c[1].distance;
+    const glm::vec3 chord = c[1].point - c[0].point;
+    r.faceAngleDeg = angleBetweenDeg(chord, -block.face(c[0].face).normal);
+    const std::vector<glm::vec3> axis = trueAxisInBlock(log, k, out.board, c[0].distance, c[1].distance);
+    for (int e = 0; e < 2; ++e) r.trueDiameterMm[e] = trueKnotDiameter(field, out.board, k, c[e]);
+    const float nearMm = static_cast<float>(r.trueDiameterMm[0] + r.trueDiameterMm[1]) * 0.5f;
+    const auto near = [&](const glm::vec3& p) { return distanceToPolyline(p, axis) < nearMm; };
+    const HiddenCut cut = cutAlongKnot(c[0], c[1]);
+    if (fittedPlain)
+      r.cutWithoutMarks = cutRingErrors(truth, *fittedPlain, block, cut, near, options.cutStepMm);
+    const auto found = std::find_if(fit.knots.begin(), fit.knots.end(), [&](const BlockKnot& b) { return b.id == k; });
+    if (found == fit.knots.end()) {
+      out.note += "no fitted knot for knot " + std::to_string(k) + "; ";
+      out.knots.push_back(r);
+      continue;
+    }
+    r.fitted = true;
+    r.axisDeg = angleBetweenDeg(found->direction, chord);
+    for (int e = 0; e < 2; ++e) {
+      const glm::vec3 onFace = axisOnFacePlane(*found, block, c[e].face);
+      r.offsetMm[e] = glm::length(onFace - c[e].point);
+      r.fittedDiameterMm[e] = fittedKnotDiameter(fitted.stem, *found, onFace);
+    }
+    r.cut = cutRingErrors(truth, fitted, block, cut, near, options.cutStepMm);
+    out.knots.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace kerf::testing
