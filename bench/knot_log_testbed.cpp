@@ -3,7 +3,10 @@
 // model, fitted by Kerf's own pipeline from the photos and the knot marks, compared with the log's truth.
 // Prints one row per knot and case (the death as measured, and removed), against issue 19's targets.
 //
-//   kerf_knot_log_testbed [LOG_FOLDER]      (default: ../shared/data/logs/spruce-gran1)
+//   kerf_knot_log_testbed [LOG_FOLDER] [--only BLOCK] [--save DIR]
+//
+// LOG_FOLDER defaults to ../shared/data/logs/spruce-gran1; --only runs one block by name ("live", "dead",
+// "steep", "two knots"); --save writes each block's photos and ring images there.
 //
 // Minutes: each block is rendered, detected and fitted twice (with the marks, and without them as the
 // reference for the rings). Not a test; tests/core/test_knot_log_bed.cpp runs one small block.
@@ -48,7 +51,8 @@ void printHeader() {
 }
 
 void printRow(const BedBlockResult& b, const BedKnotResult& k) {
-  const char* death = !k.deadInBlock ? "alive" : (b.withDeath ? "dead" : "remov");
+  // alive: the knot lives through the block; dead: it dies in it (as measured); no: its death removed.
+  const char* death = !k.deadInBlock ? "alive" : (b.withDeath ? "dead" : "no");
   char faces[8];
   std::snprintf(faces, sizeof faces, "%c%c", faceLetter(k.faces[0]), faceLetter(k.faces[1]));
   const auto pct = [&](int e) { return 100.0 * (k.fittedDiameterMm[e] - k.trueDiameterMm[e]) / k.trueDiameterMm[e]; };
@@ -61,18 +65,43 @@ void printRow(const BedBlockResult& b, const BedKnotResult& k) {
       b.fitSeconds);
 }
 
+// What the fit did besides the knots: where its pith lies against the log's, and where its time went.
+void printBlockLine(const BedBlockResult& b) {
+  const GrowthFieldFitReport& r = b.report;
+  std::printf(
+      "  pith %.2f deg, %.2f mm off (without marks %.2f deg, %.2f mm); ring width %.2f mm; stages: anatomy %.1f s, "
+      "pith %.1f s, rings %.1f s, distortions %.1f s, placement %.1f s, colours %.1f s, knots %.1f s;",
+      b.pithDeg, b.pithMm, b.pithDegWithoutMarks, b.pithMmWithoutMarks, r.ringWidthMm, r.anatomySeconds,
+      r.pith.gridSeconds + r.pith.refineSeconds, r.ringSeconds, r.distortionSeconds, r.placementSeconds,
+      r.colourSeconds, r.knotSeconds);
+  for (const BlockKnotFitEntry& e : r.knots)
+    std::printf(" knot %d speed %.3f (initial %.3f), k_stem %.2f, moved %.2f deg;", e.id, e.fitted.speed,
+                e.initial.speed, r.knotSmoothStem, e.axisMovedDeg);
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
-    const std::filesystem::path folder =
-        argc > 1 ? std::filesystem::path(argv[1])
-                 : std::filesystem::path(KERF_SHARED_DIR) / "data" / "logs" / "spruce-gran1";
+    std::filesystem::path folder = std::filesystem::path(KERF_SHARED_DIR) / "data" / "logs" / "spruce-gran1";
+    std::string only;
+    BedRunOptions options;
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--only" && i + 1 < argc)
+        only = argv[++i];
+      else if (arg == "--save" && i + 1 < argc)
+        options.saveDir = argv[++i];
+      else
+        folder = arg;
+    }
     const LogModel log = loadLog(folder);
     const std::vector<BedBlockSpec> specs = pickBedBlocks(log);
     printSpecs(log, specs);
     printHeader();
     for (const BedBlockSpec& spec : specs) {
+      if (!only.empty() && spec.name != only) continue;
       bool dies = false;
       for (int k : spec.knots) {
         const std::vector<AxisCrossing> c = axisCrossings(log, k, placeBedBlock(log, spec));
@@ -80,8 +109,9 @@ int main(int argc, char** argv) {
       }
       for (const bool withDeath : {true, false}) {
         if (!withDeath && !dies) continue;  // nothing dies in the block: the same case
-        const BedBlockResult result = runBedBlock(log, spec, withDeath);
+        const BedBlockResult result = runBedBlock(log, spec, withDeath, options);
         for (const BedKnotResult& k : result.knots) printRow(result, k);
+        printBlockLine(result);
         if (!result.note.empty()) std::printf("  note: %s\n", result.note.c_str());
         std::fflush(stdout);
       }

@@ -8,6 +8,7 @@
 // is known to the comparison alone (knot_fit_truth.hpp). Shared by bench/knot_log_testbed.cpp and
 // tests/core/test_knot_log_bed.cpp.
 #include <array>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "field/knot_field.hpp"
 #include "fit/growth_field_fit.hpp"
 #include "image/gray_image.hpp"
+#include "io/image.hpp"
 #include "knot_fit_truth.hpp"
 #include "log_block_photos.hpp"
 #include "log_cut_blocks.hpp"
@@ -30,12 +32,13 @@ struct BedRunOptions {
   BlockPhotoOptions photos;
   float cutStepMm = 0.1f;  // grid of the hidden cut
   bool withoutMarks = true;  // also fit with no marks, the reference the knot fit should beat on the cut
+  std::filesystem::path saveDir;  // where to write the photos and ring images to look at (empty: nowhere)
 };
 
 // One knot of a block, fitted against the truth.
 struct BedKnotResult {
   int knot = 0;                        // log index (also its marks' id)
-  bool deadInBlock = false;            // the true knot is dead somewhere in the block
+  bool deadInBlock = false;            // the measured knot dies before it leaves the block
   bool fitted = false;                 // the fit returned a knot for its marks
   std::array<FaceId, 2> faces{};       // the marked faces (entry, exit)
   double faceAngleDeg = 0;             // true axis against the entry face's normal
@@ -51,6 +54,10 @@ struct BedBlockResult {
   Board board;
   int contours = 0;
   std::vector<BedKnotResult> knots;
+  // The fitted pith against the log's (block frame): the angle, and the distance at the block's centre;
+  // with the marks and without them.
+  double pithDeg = 0, pithMm = 0, pithDegWithoutMarks = 0, pithMmWithoutMarks = 0;
+  GrowthFieldFitReport report;  // the fit with the marks (stage timings, knot entries)
   double fitSeconds = 0;
   std::string note;  // why something is missing
 };
@@ -67,6 +74,20 @@ struct FittedBlockField {
     return knots.merge(p, stem.evaluate(c), c.radius).time;
   }
 };
+
+// The fitted pith axis against the log's pith through the block: angle (deg) and distance (mm) from the
+// point of the true pith nearest the block's centre.
+inline void pithError(const LogModel& log, const Board& board, const WoodParameters& fitted, double& deg,
+                      double& mm) {
+  const glm::vec2 a = log.stem.pithAt(board.center.z - 30.0f), b = log.stem.pithAt(board.center.z + 30.0f);
+  const glm::vec3 p0 = logToBlock(board, glm::vec3(a, board.center.z - 30.0f));
+  const glm::vec3 p1 = logToBlock(board, glm::vec3(b, board.center.z + 30.0f));
+  const glm::vec3 v = glm::normalize(p1 - p0);
+  const glm::vec3 nearest = p0 + glm::dot(-p0, v) * v;
+  const PithAxis axis = PithAxis::fromAngles(fitted.pithOrigin, fitted.pithTilt, fitted.pithAzimuth);
+  deg = std::min(angleBetweenDeg(axis.direction, v), angleBetweenDeg(-axis.direction, v));
+  mm = axis.toCylindrical(nearest, false).radius;
+}
 
 inline GrowthFieldFitResult fitBedPhotos(const std::array<Image, 6>& photos, const BlockRingDetection& rings,
                                          const Block& block, const std::vector<KnotMark>& marks) {
@@ -98,6 +119,15 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
   const std::array<Image, 6> photos = renderLogBlockFaces(field, colours, out.board, options.photos);
   const BlockRingDetection rings = detectBlockRings(photos, block);
   out.contours = rings.contourCount();
+  if (!options.saveDir.empty()) {
+    std::filesystem::create_directories(options.saveDir);
+    const std::string stem = spec.name + (withDeath ? "" : "_no_death") + "_";
+    for (FaceId f : kAllFaces) {
+      const std::string face(1, faceLetter(f));
+      writeImage(options.saveDir / (stem + face + "_col.png"), photos[faceIndex(f)]);
+      if (rings.faces[faceIndex(f)]) writeImage(options.saveDir / (stem + face + "_arl.png"), rings.faces[faceIndex(f)]->arl);
+    }
+  }
 
   std::vector<KnotMark> marks;
   std::vector<std::vector<AxisCrossing>> crossings;
@@ -108,8 +138,13 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
   const Stopwatch clock;
   const GrowthFieldFitResult fit = fitBedPhotos(photos, rings, block, marks);
   out.fitSeconds = clock.seconds();
+  out.report = fit.report;
+  pithError(log, out.board, fit.params, out.pithDeg, out.pithMm);
   std::optional<GrowthFieldFitResult> plain;
-  if (options.withoutMarks) plain = fitBedPhotos(photos, rings, block, {});
+  if (options.withoutMarks) {
+    plain = fitBedPhotos(photos, rings, block, {});
+    pithError(log, out.board, plain->params, out.pithDegWithoutMarks, out.pithMmWithoutMarks);
+  }
 
   // The truth in the block frame, with only the knots that can reach the block (the rest change nothing).
   std::vector<int> reaching;
@@ -139,7 +174,7 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
       continue;
     }
     r.faces = {c[0].face, c[1].face};
-    r.deadInBlock = log.knots[k].deathDistance < c[1].distance;
+    r.deadInBlock = measured.knots[k].deathDistance < c[1].distance;
     const glm::vec3 chord = c[1].point - c[0].point;
     r.faceAngleDeg = angleBetweenDeg(chord, -block.face(c[0].face).normal);
     const std::vector<glm::vec3> axis = trueAxisInBlock(log, k, out.board, c[0].distance, c[1].distance);
