@@ -27,16 +27,18 @@ using namespace kerf::testing;
 namespace {
 
 void printSpecs(const LogModel& log, const std::vector<BedBlockSpec>& specs) {
-  std::printf("blocks (picked by rule from the log's data, centred %.0f mm from the pith):\n", kBedDistanceMm);
+  std::printf("blocks (picked by rule from the log's data, centred %.0f mm from the pith):\n",
+              kBedDistanceMm);
   for (const BedBlockSpec& s : specs) {
-    std::printf("  %-10s %.0f mm cube, turned %.0f deg about the log, tilted %.0f deg:", s.name.c_str(), s.sizeMm,
-                s.turnAboutLogDeg, s.tiltDeg);
+    std::printf("  %-10s %.0f mm cube, turned %.0f deg about the log, tilted %.0f deg:", s.name.c_str(),
+                s.sizeMm, s.turnAboutLogDeg, s.tiltDeg);
     for (int k : s.knots) {
       const Knot& knot = log.knots[k];
-      std::printf(" knot %d (z %.0f mm, rise %.1f deg, death %s, isolation %.0f mm)", k, knot.heightAt(kBedDistanceMm),
-                  knotRiseDeg(log, k, kBedDistanceMm),
-                  std::isfinite(knot.deathDistance) ? (std::to_string(std::lround(knot.deathDistance)) + " mm").c_str()
-                                                    : "never",
+      std::printf(" knot %d (z %.0f mm, rise %.1f deg, death %s, isolation %.0f mm)", k,
+                  knot.heightAt(kBedDistanceMm), knotRiseDeg(log, k, kBedDistanceMm),
+                  std::isfinite(knot.deathDistance)
+                      ? (std::to_string(std::lround(knot.deathDistance)) + " mm").c_str()
+                      : "never",
                   knotIsolation(log, k, s.knots));
     }
     std::printf("\n");
@@ -45,11 +47,15 @@ void printSpecs(const LogModel& log, const std::vector<BedBlockSpec>& specs) {
 
 void printHeader() {
   std::printf(
-      "\n%-10s %-6s %4s %-5s %5s | %6s | %5s %5s | %5s %5s %6s | %5s %5s %6s | %5s %5s | %5s %5s | %5s | %4s %5s\n",
-      "block", "death", "knot", "faces", "angle", "axis", "off1", "off2", "dT1", "dF1", "err1", "dT2", "dF2", "err2",
-      "cut", "near", "cut0", "near0", "nearD", "ctrs", "fit");
-  std::printf("%-10s %-6s %4s %-5s %5s | %6s | %5s %5s | %5s %5s %6s | %5s %5s %6s | %5s %5s | %5s %5s | %5s | %4s %5s\n", "",
-              "", "", "", "deg", "deg", "mm", "mm", "mm", "mm", "%", "mm", "mm", "%", "mm", "mm", "mm", "mm", "mm", "", "s");
+      "\n%-10s %-6s %4s %-5s %5s | %6s | %5s %5s | %5s %5s %6s | %5s %5s %6s | %5s %5s | %5s %5s | %5s | %4s "
+      "%5s\n",
+      "block", "death", "knot", "faces", "angle", "axis", "off1", "off2", "dT1", "dF1", "err1", "dT2", "dF2",
+      "err2", "cut", "near", "cut0", "near0", "nearD", "ctrs", "fit");
+  std::printf(
+      "%-10s %-6s %4s %-5s %5s | %6s | %5s %5s | %5s %5s %6s | %5s %5s %6s | %5s %5s | %5s %5s | %5s | %4s "
+      "%5s\n",
+      "", "", "", "", "deg", "deg", "mm", "mm", "mm", "mm", "%", "mm", "mm", "%", "mm", "mm", "mm", "mm",
+      "mm", "", "s");
 }
 
 void printRow(const BedBlockResult& b, const BedKnotResult& k) {
@@ -57,21 +63,25 @@ void printRow(const BedBlockResult& b, const BedKnotResult& k) {
   const char* death = !k.deadInBlock ? "alive" : (b.withDeath ? "dead" : "no");
   char faces[8];
   std::snprintf(faces, sizeof faces, "%c%c", faceLetter(k.faces[0]), faceLetter(k.faces[1]));
-  const auto pct = [&](int e) { return 100.0 * (k.fittedDiameterMm[e] - k.trueDiameterMm[e]) / k.trueDiameterMm[e]; };
+  const auto pct = [&](int e) {
+    return 100.0 * (k.fittedDiameterMm[e] - k.trueDiameterMm[e]) / k.trueDiameterMm[e];
+  };
   std::printf(
-      "%-10s %-6s %4d %-5s %5.1f | %6.2f | %5.2f %5.2f | %5.1f %5.1f %+6.1f | %5.1f %5.1f %+6.1f | %5.2f %5.2f | %5.2f %5.2f "
+      "%-10s %-6s %4d %-5s %5.1f | %6.2f | %5.2f %5.2f | %5.1f %5.1f %+6.1f | %5.1f %5.1f %+6.1f | %5.2f "
+      "%5.2f | %5.2f %5.2f "
       "| %5.2f | %4d %5.1f\n",
       b.spec.name.c_str(), death, k.knot, faces, k.faceAngleDeg, k.axisDeg, k.offsetMm[0], k.offsetMm[1],
       k.trueDiameterMm[0], k.fittedDiameterMm[0], pct(0), k.trueDiameterMm[1], k.fittedDiameterMm[1], pct(1),
-      k.cut.medianMm, k.cut.medianNearMm, k.cutWithoutMarks.medianMm, k.cutWithoutMarks.medianNearMm, k.cutAtTrueSize.medianNearMm, b.contours,
-      b.fitSeconds);
+      k.cut.medianMm, k.cut.medianNearMm, k.cutWithoutMarks.medianMm, k.cutWithoutMarks.medianNearMm,
+      k.cutAtTrueSize.medianNearMm, b.contours, b.fitSeconds);
 }
 
 // What the fit did besides the knots: where its pith lies against the log's, and where its time went.
 void printBlockLine(const BedBlockResult& b) {
   const GrowthFieldFitReport& r = b.report;
   std::printf(
-      "  pith %.2f deg, %.2f mm off (without marks %.2f deg, %.2f mm); ring width %.2f mm; stages: anatomy %.1f s, "
+      "  pith %.2f deg, %.2f mm off (without marks %.2f deg, %.2f mm); ring width %.2f mm; stages: anatomy "
+      "%.1f s, "
       "pith %.1f s, rings %.1f s, distortions %.1f s, placement %.1f s, colours %.1f s, knots %.1f s;",
       b.pithDeg, b.pithMm, b.pithDegWithoutMarks, b.pithMmWithoutMarks, r.ringWidthMm, r.anatomySeconds,
       r.pith.gridSeconds + r.pith.refineSeconds, r.ringSeconds, r.distortionSeconds, r.placementSeconds,
@@ -128,10 +138,14 @@ int main(int argc, char** argv) {
       }
     }
     std::printf(
-        "\nangle: true axis against the entry face's normal; axis: fitted against true (chord between the marks);\n"
-        "off1/off2: fitted axis to the mark on the entry/exit face's plane; dT/dF: true/fitted knot diameter there;\n"
-        "cut/near: median ring distance (fitted iso-surface from the true iso-line) on the hidden cut along the knot,\n"
-        "all / within a knot diameter of its axis; cut0/near0: the same fitted without marks; nearD: near, the fitted\n"
+        "\nangle: true axis against the entry face's normal; axis: fitted against true (chord between the "
+        "marks);\n"
+        "off1/off2: fitted axis to the mark on the entry/exit face's plane; dT/dF: true/fitted knot diameter "
+        "there;\n"
+        "cut/near: median ring distance (fitted iso-surface from the true iso-line) on the hidden cut along "
+        "the knot,\n"
+        "all / within a knot diameter of its axis; cut0/near0: the same fitted without marks; nearD: near, "
+        "the fitted\n"
         "knot's speed scaled to the true diameter (a diagnosis); ctrs: contours detected; fit: seconds.\n"
         "Issue 19 targets: axis 3 deg, off 1 mm, diameter 15 %%, rings on the hidden cut 0.5 mm (median).\n");
     return 0;

@@ -66,7 +66,8 @@ inline double crossSectionDiameter(const glm::vec3& centre, glm::vec3 axis,
 // cut perpendicular to the centre line.
 inline double trueKnotDiameter(const KnotField& field, const Board& board, int k, const AxisCrossing& c) {
   const LogModel& log = field.log();
-  const glm::vec3 tangentLog = knotAxisPoint(log, k, c.distance + 0.5f) - knotAxisPoint(log, k, c.distance - 0.5f);
+  const glm::vec3 tangentLog =
+      knotAxisPoint(log, k, c.distance + 0.5f) - knotAxisPoint(log, k, c.distance - 0.5f);
   const int knots[] = {k};
   return crossSectionDiameter(c.point, glm::transpose(board.axes()) * tangentLog, [&](const glm::vec3& q) {
     const KnotFieldSample s = field.evaluate(board.toLog(q), knots);
@@ -163,7 +164,8 @@ inline CutRingErrors cutRingErrors(const ScalarField& truth, const ScalarField& 
       if (i + 1 < n) addCrossings(i, j, i + 1, j);
       if (j + 1 < n) addCrossings(i, j, i, j + 1);
     }
-  std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.level < b.level; });
+  std::sort(crossings.begin(), crossings.end(),
+            [](const Crossing& a, const Crossing& b) { return a.level < b.level; });
   std::vector<double> all, nearOnes;
   for (std::size_t b = 0; b < crossings.size();) {
     std::size_t e = b;
@@ -198,7 +200,8 @@ inline float distanceToPolyline(const glm::vec3& p, const std::vector<glm::vec3>
 }
 
 // The true centre line of knot k between two distances, in the block frame, every half millimetre.
-inline std::vector<glm::vec3> trueAxisInBlock(const LogModel& log, int k, const Board& board, float d0, float d1) {
+inline std::vector<glm::vec3> trueAxisInBlock(const LogModel& log, int k, const Board& board, float d0,
+                                              float d1) {
   std::vector<glm::vec3> line;
   for (float d = d0; d < d1; d += 0.5f) line.push_back(logToBlock(board, knotAxisPoint(log, k, d)));
   line.push_back(logToBlock(board, knotAxisPoint(log, k, d1)));

@@ -30,8 +30,8 @@ namespace kerf::testing {
 
 struct BedRunOptions {
   BlockPhotoOptions photos;
-  float cutStepMm = 0.1f;  // grid of the hidden cut
-  bool withoutMarks = true;  // also fit with no marks, the reference the knot fit should beat on the cut
+  float cutStepMm = 0.1f;         // grid of the hidden cut
+  bool withoutMarks = true;       // also fit with no marks, the reference the knot fit should beat on the cut
   std::filesystem::path saveDir;  // where to write the photos and ring images to look at (empty: nowhere)
   // The fit's options, as `kerf-cli fit` sets them; the test turns off the mirrored candidate to save time.
   GrowthFieldFitOptions fit = [] {
@@ -44,13 +44,13 @@ struct BedRunOptions {
 
 // One knot of a block, fitted against the truth.
 struct BedKnotResult {
-  int knot = 0;                        // log index (also its marks' id)
-  bool deadInBlock = false;            // the measured knot dies before it leaves the block
-  bool fitted = false;                 // the fit returned a knot for its marks
-  std::array<FaceId, 2> faces{};       // the marked faces (entry, exit)
-  double faceAngleDeg = 0;             // true axis against the entry face's normal
-  double axisDeg = 0;                  // fitted axis against the true one (the chord between the marks)
-  std::array<double, 2> offsetMm{};    // fitted axis against the mark, on each marked face's plane
+  int knot = 0;                      // log index (also its marks' id)
+  bool deadInBlock = false;          // the measured knot dies before it leaves the block
+  bool fitted = false;               // the fit returned a knot for its marks
+  std::array<FaceId, 2> faces{};     // the marked faces (entry, exit)
+  double faceAngleDeg = 0;           // true axis against the entry face's normal
+  double axisDeg = 0;                // fitted axis against the true one (the chord between the marks)
+  std::array<double, 2> offsetMm{};  // fitted axis against the mark, on each marked face's plane
   std::array<double, 2> trueDiameterMm{}, fittedDiameterMm{};
   CutRingErrors cut, cutWithoutMarks;  // rings on the hidden cut along this knot
   // A diagnosis, not a fit: the same fitted field with this knot's speed scaled so that its diameter
@@ -78,8 +78,10 @@ struct FittedBlockField {
   GrowthField stem;
   BlockKnots knots;
   FittedBlockField(const WoodParameters& params, const GrowthRates& rates, std::vector<BlockKnot> blockKnots)
-      : stem(params, rates), knots(std::move(blockKnots), KnotSettings::fromParameters(params), params.ringWidth) {}
-  explicit FittedBlockField(const GrowthFieldFitResult& fit) : FittedBlockField(fit.params, *fit.rates, fit.knots) {}
+      : stem(params, rates),
+        knots(std::move(blockKnots), KnotSettings::fromParameters(params), params.ringWidth) {}
+  explicit FittedBlockField(const GrowthFieldFitResult& fit)
+      : FittedBlockField(fit.params, *fit.rates, fit.knots) {}
   float operator()(const glm::vec3& p) const {
     const Cylindrical c = stem.axis().toCylindrical(p);
     return knots.merge(p, stem.evaluate(c), c.radius).time;
@@ -121,9 +123,8 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
   const LogModel log = withDeath ? measured : withoutDeaths(measured, spec.knots);
   const WoodParameters defaults;
   const KnotField field(log, KnotSettings::fromParameters(defaults));
-  const WoodColorMap colours = log.colorMap.empty()
-                                   ? woodColorMapFromParameters(defaults, log.stem.maxRadius())
-                                   : log.colorMap;
+  const WoodColorMap colours =
+      log.colorMap.empty() ? woodColorMapFromParameters(defaults, log.stem.maxRadius()) : log.colorMap;
   const Block block = out.board.block();
   const std::array<Image, 6> photos = renderLogBlockFaces(field, colours, out.board, options.photos);
   const BlockRingDetection rings = detectBlockRings(photos, block);
@@ -134,7 +135,8 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
     for (FaceId f : kAllFaces) {
       const std::string face(1, faceLetter(f));
       writeImage(options.saveDir / (stem + face + "_col.png"), photos[faceIndex(f)]);
-      if (rings.faces[faceIndex(f)]) writeImage(options.saveDir / (stem + face + "_arl.png"), rings.faces[faceIndex(f)]->arl);
+      if (rings.faces[faceIndex(f)])
+        writeImage(options.saveDir / (stem + face + "_arl.png"), rings.faces[faceIndex(f)]->arl);
     }
   }
 
@@ -167,7 +169,9 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
     }
     field.cull(lo, hi, field.allKnots(), reaching);
   }
-  const ScalarField truth = [&](const glm::vec3& q) { return field.evaluate(out.board.toLog(q), reaching).time; };
+  const ScalarField truth = [&](const glm::vec3& q) {
+    return field.evaluate(out.board.toLog(q), reaching).time;
+  };
   const FittedBlockField fitted(fit);
   std::optional<FittedBlockField> fittedPlain;
   if (plain) fittedPlain.emplace(*plain);
@@ -193,7 +197,8 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
     const HiddenCut cut = cutAlongKnot(c[0], c[1]);
     if (fittedPlain)
       r.cutWithoutMarks = cutRingErrors(truth, *fittedPlain, block, cut, near, options.cutStepMm);
-    const auto found = std::find_if(fit.knots.begin(), fit.knots.end(), [&](const BlockKnot& b) { return b.id == k; });
+    const auto found =
+        std::find_if(fit.knots.begin(), fit.knots.end(), [&](const BlockKnot& b) { return b.id == k; });
     if (found == fit.knots.end()) {
       out.note += "no fitted knot for knot " + std::to_string(k) + "; ";
       out.knots.push_back(r);
@@ -213,7 +218,8 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
         const double ratio = 0.5 * (r.trueDiameterMm[0] / std::max(r.fittedDiameterMm[0], 1e-3) +
                                     r.trueDiameterMm[1] / std::max(r.fittedDiameterMm[1], 1e-3));
         const KnotSettings s = KnotSettings::fromParameters(fit.params);
-        b.speed = std::min(static_cast<float>(b.speed * ratio), 0.9f * std::min(s.knotReachStart, s.knotReachEnd));
+        b.speed =
+            std::min(static_cast<float>(b.speed * ratio), 0.9f * std::min(s.knotReachStart, s.knotReachEnd));
       }
     const FittedBlockField trueSize(fit.params, *fit.rates, resized);
     r.cutAtTrueSize = cutRingErrors(truth, trueSize, block, cut, near, options.cutStepMm);

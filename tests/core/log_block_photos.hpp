@@ -35,7 +35,8 @@ inline std::array<Image, 6> renderLogBlockFaces(const KnotField& field, const Wo
     BoardRenderOptions render;
     render.face = f;
     const FaceFrame frame = board.block().face(f);
-    render.resolution = static_cast<int>(std::lround(options.pxPerMm * std::max(frame.widthMm, frame.heightMm)));
+    render.resolution =
+        static_cast<int>(std::lround(options.pxPerMm * std::max(frame.widthMm, frame.heightMm)));
     Image image = renderBoardFace(field, colours, board, render);
     if (options.pixelNoise > 0.0f)
       for (float& v : image.pixels) v = std::clamp(v + noise(rng), 0.0f, 1.0f);

@@ -63,9 +63,9 @@ inline float knotIsolation(const LogModel& log, int k, const std::vector<int>& b
 
 // One block of the bed: its knots (log indices), its size and how it is turned away from facing the pith.
 struct BedBlockSpec {
-  std::string name;             // what it tests, e.g. "live", "dead", "two knots"
-  std::vector<int> knots;       // the knots it is cut around (marked and compared)
-  float sizeMm = 50.0f;         // a cube
+  std::string name;              // what it tests, e.g. "live", "dead", "two knots"
+  std::vector<int> knots;        // the knots it is cut around (marked and compared)
+  float sizeMm = 50.0f;          // a cube
   float turnAboutLogDeg = 0.0f;  // about the log's axis (the knot then meets face A obliquely)
   float tiltDeg = 0.0f;          // about the block's width axis (the pith then leans in the block)
 };
@@ -175,7 +175,8 @@ inline std::vector<BedBlockSpec> pickBedBlocks(const LogModel& log) {
     if (pick >= 0) out.push_back({name, {pick}, 50.0f, turn, tilt});
   };
   const auto isolation = [&](int k) { return knotIsolation(log, k); };
-  best("live", [&](int k) { return log.knots[k].deathDistance >= d + 40.0f; }, isolation, 0.0f, 0.0f);
+  best(
+      "live", [&](int k) { return log.knots[k].deathDistance >= d + 40.0f; }, isolation, 0.0f, 0.0f);
   best(
       "dead",
       [&](int k) { return log.knots[k].deathDistance >= d - 25.0f && log.knots[k].deathDistance < d; },
