@@ -90,6 +90,9 @@ void printBlockLine(const BedBlockResult& b) {
   for (const BlockKnotFitEntry& e : r.knots)
     std::printf(" knot %d speed %.3f (initial %.3f), k_stem %.2f, moved %.2f deg;", e.id, e.fitted.speed,
                 e.initial.speed, r.knotSmoothStem, e.axisMovedDeg);
+  for (const BedKnotResult& k : b.knots)
+    std::printf(" knot %d contour error near it %.3f, at the true size %.3f ring spacings;", k.knot,
+                k.contourLoss, k.contourLossAtTrueSize);
   std::printf("\n");
 }
 

@@ -16,7 +16,9 @@
 #include "field/block_knots.hpp"
 #include "field/growth_field.hpp"
 #include "field/knot_field.hpp"
+#include "fit/block_knot_fit.hpp"
 #include "fit/growth_field_fit.hpp"
+#include "fit/iso_contours.hpp"
 #include "image/gray_image.hpp"
 #include "io/image.hpp"
 #include "knot_fit_truth.hpp"
@@ -57,6 +59,10 @@ struct BedKnotResult {
   // matches the truth's (the mean of both faces' ratios). Better rings than `cut`: the fit stopped short
   // of the knot's size; worse: the block model explains the rings better with a thinner knot.
   CutRingErrors cutAtTrueSize;
+  // The same question on the data the fit saw: the iso-contour error (mean |G - contour median|, ring
+  // spacings; fit/block_knot_fit.hpp nearKnotLoss) of the detected contours' points within a knot
+  // diameter of the true axis, with the fitted knot and with it at the true size.
+  double contourLoss = 0, contourLossAtTrueSize = 0;
 };
 
 struct BedBlockResult {
@@ -146,6 +152,12 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
     crossings.push_back(axisCrossings(log, k, out.board));
     for (const KnotMark& m : knotMarksAtCrossings(log, k, out.board)) marks.push_back(m);
   }
+  IsoContours contours;  // as the fit extracts them from the ring images
+  for (FaceId f : kAllFaces)
+    if (const auto& face = rings.faces[faceIndex(f)]) {
+      const GrayImage8 image = toGray8(face->arl);
+      addFaceContours(contours, block, f, {image.width, image.height}, extractIsoContours(image));
+    }
   const Stopwatch clock;
   const GrowthFieldFitResult fit = fitBedPhotos(photos, rings, block, marks, options.fit);
   out.fitSeconds = clock.seconds();
@@ -223,6 +235,15 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
       }
     const FittedBlockField trueSize(fit.params, *fit.rates, resized);
     r.cutAtTrueSize = cutRingErrors(truth, trueSize, block, cut, near, options.cutStepMm);
+    std::vector<bool> nearPoints;
+    std::vector<double> withFitted, withTrueSize;
+    for (const glm::vec3& p : contours.points) {
+      nearPoints.push_back(near(p));
+      withFitted.push_back(fitted(p));
+      withTrueSize.push_back(trueSize(p));
+    }
+    r.contourLoss = nearKnotLoss(contours, withFitted, nearPoints);
+    r.contourLossAtTrueSize = nearKnotLoss(contours, withTrueSize, nearPoints);
     out.knots.push_back(r);
   }
   return out;
