@@ -12,6 +12,7 @@
 #include "field/block_knots.hpp"
 #include "field/growth_field.hpp"
 #include "field/knot_field.hpp"
+#include "fit/iso_contour_loss.hpp"
 #include "log_cut_blocks.hpp"
 
 namespace kerf::testing {
@@ -181,6 +182,37 @@ inline CutRingErrors cutRingErrors(const ScalarField& truth, const ScalarField& 
     }
     b = e;
   }
+  out.points = static_cast<int>(all.size());
+  out.nearPoints = static_cast<int>(nearOnes.size());
+  out.medianMm = medianOf(all);
+  out.medianNearMm = medianOf(nearOnes);
+  return out;
+}
+
+// How far the points of each contour lie (mm, |f - the contour's median f| over |grad f|) from the
+// iso-surface of `field` through their contour's median: 0 when every contour is an iso-line of `field`.
+// With the true field, it measures the contours the fit was given (the ring detector's) against the truth.
+inline CutRingErrors contourErrors(const ScalarField& field, const IsoContours& contours,
+                                   const std::function<bool(const glm::vec3&)>& near) {
+  std::vector<double> all, nearOnes;
+  for (int c = 0; c < contours.count(); ++c) {
+    std::vector<double> values;
+    for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i)
+      values.push_back(field(contours.points[i]));
+    const double median = medianOf(values);
+    for (int i = contours.begin[c]; i < contours.begin[c + 1]; ++i) {
+      const glm::vec3 p = contours.points[i];
+      const float h = 0.05f;
+      const glm::vec3 grad(field(p + glm::vec3(h, 0, 0)) - field(p - glm::vec3(h, 0, 0)),
+                           field(p + glm::vec3(0, h, 0)) - field(p - glm::vec3(0, h, 0)),
+                           field(p + glm::vec3(0, 0, h)) - field(p - glm::vec3(0, 0, h)));
+      const double err = std::abs(values[i - contours.begin[c]] - median) /
+                         std::max(static_cast<double>(glm::length(grad)) / (2.0 * h), 1e-9);
+      all.push_back(err);
+      if (near(p)) nearOnes.push_back(err);
+    }
+  }
+  CutRingErrors out;
   out.points = static_cast<int>(all.size());
   out.nearPoints = static_cast<int>(nearOnes.size());
   out.medianMm = medianOf(all);

@@ -63,6 +63,8 @@ struct BedKnotResult {
   // spacings; fit/block_knot_fit.hpp nearKnotLoss) of the detected contours' points within a knot
   // diameter of the true axis, with the fitted knot and with it at the true size.
   double contourLoss = 0, contourLossAtTrueSize = 0;
+  // The detected contours against the truth (knot_fit_truth.hpp contourErrors), mm: all, near this knot.
+  CutRingErrors detectedContours;
 };
 
 struct BedBlockResult {
@@ -244,6 +246,7 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
     }
     r.contourLoss = nearKnotLoss(contours, withFitted, nearPoints);
     r.contourLossAtTrueSize = nearKnotLoss(contours, withTrueSize, nearPoints);
+    r.detectedContours = contourErrors(truth, contours, near);
     out.knots.push_back(r);
   }
   return out;
