@@ -91,8 +91,12 @@ void printBlockLine(const BedBlockResult& b) {
     std::printf(" knot %d speed %.3f (initial %.3f), k_stem %.2f, moved %.2f deg;", e.id, e.fitted.speed,
                 e.initial.speed, r.knotSmoothStem, e.axisMovedDeg);
   for (const BedKnotResult& k : b.knots)
-    std::printf(" knot %d contour error near it %.3f, at the true size %.3f ring spacings;", k.knot,
-                k.contourLoss, k.contourLossAtTrueSize);
+    std::printf(
+        " knot %d: contour error near it %.3f, at the true size %.3f ring spacings; detected contours off "
+        "the true "
+        "iso-lines %.2f mm median, %.2f near it;",
+        k.knot, k.contourLoss, k.contourLossAtTrueSize, k.detectedContours.medianMm,
+        k.detectedContours.medianNearMm);
   std::printf("\n");
 }
 
