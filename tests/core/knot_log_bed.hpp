@@ -7,6 +7,7 @@
 // 5.2.4). The fit sees the photos, the block's size and the marks only; where the block lies in the log
 // is known to the comparison alone (knot_fit_truth.hpp). Shared by bench/knot_log_testbed.cpp and
 // tests/core/test_knot_log_bed.cpp.
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <optional>

@@ -5,6 +5,7 @@
 // anywhere in the chain fails here. Where the fit falls short of issue 19's targets the bound says so.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
