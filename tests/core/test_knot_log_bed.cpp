@@ -63,18 +63,20 @@ TEST(KnotLogBed, ALiveKnotBlockFromTheSpruceLogIsFittedNearTheTruth) {
       k.offsetMm[1], k.fittedDiameterMm[0], k.fittedDiameterMm[1], k.trueDiameterMm[0], k.trueDiameterMm[1],
       k.cut.medianMm, k.cut.medianNearMm, k.cut.points, k.cut.nearPoints, result.pithDeg, result.pithMm,
       result.contours, result.fitSeconds);
-  // Measured on this block: axis 2.1 deg, 1.46 / 0.22 mm off the marks (issue 19: 3 deg, 1 mm).
-  EXPECT_LT(k.axisDeg, 3.5);
-  EXPECT_LT(k.offsetMm[0], 2.5);
-  EXPECT_LT(k.offsetMm[1], 2.5);
+  // Measured on this block: axis 1.42 deg, 0.90 / 0.23 mm off the marks (issue 19: 3 deg, 1 mm). Before
+  // the marks held the knot (issue 19 item 1): 2.1 deg, 1.46 / 0.22 mm. The marks' default accuracy,
+  // 1 mm, is what item 1 guarantees (a little over it: the offset is taken in the face's plane).
+  EXPECT_LT(k.axisDeg, 3.0);
+  EXPECT_LT(k.offsetMm[0], 1.05);
+  EXPECT_LT(k.offsetMm[1], 1.05);
   // Measured: 13-17 % of the true diameter (issue 19: within 15 % of it). The lower bound catches a knot
   // that vanishes; the upper one is the target's, so that a fit that learns the knot's size still passes.
   for (int e = 0; e < 2; ++e) {
     EXPECT_GT(k.fittedDiameterMm[e], 0.05 * k.trueDiameterMm[e]);
     EXPECT_LT(k.fittedDiameterMm[e], 1.15 * k.trueDiameterMm[e]);
   }
-  // Measured: 1.47 mm median, 1.30 near the knot (issue 19: 0.5 mm).
+  // Measured: 1.34 mm median, 1.18 near the knot (before the marks held: 1.47 / 1.30; issue 19: 0.5 mm).
   EXPECT_GT(k.cut.nearPoints, 100);
-  EXPECT_LT(k.cut.medianMm, 2.5);
-  EXPECT_LT(k.cut.medianNearMm, 2.5);
+  EXPECT_LT(k.cut.medianMm, 2.0);
+  EXPECT_LT(k.cut.medianNearMm, 2.0);
 }
