@@ -20,9 +20,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A folder per test: ctest runs the tests of this program at the same time, in processes of their own.
 fs::path scratch(const std::string& name) {
-  static const fs::path dir = kerf::testing::scratchFolder("codecs", "files");
-  return dir / name;
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return kerf::testing::artifactFile("codecs/" + test, name);
 }
 
 // All channels as OpenImageIO decodes them (colour as stored, as io/image.cpp asked it to).
