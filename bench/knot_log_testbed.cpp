@@ -88,8 +88,11 @@ void printBlockLine(const BedBlockResult& b) {
       r.colourSeconds, r.knotSeconds);
   if (r.alternativeLossRings) std::printf(" the mirrored pith fitted too;");
   for (const BlockKnotFitEntry& e : r.knots)
-    std::printf(" knot %d speed %.3f (initial %.3f), k_stem %.2f, moved %.2f deg;", e.id, e.fitted.speed,
-                e.initial.speed, r.knotSmoothStem, e.axisMovedDeg);
+    std::printf(" knot %d speed %.3f (initial %.3f), taper %.3f at %.1f years, k_stem %.2f, moved %.2f deg;",
+                e.id, e.fitted.speed, e.initial.speed, e.fitted.taper, e.fitted.taperAge, r.knotSmoothStem,
+                e.axisMovedDeg);
+  for (const KnotOutline& o : r.knotOutlines)
+    std::printf(" knot %d's edge on %c: %s;", o.knot, faceLetter(o.face), o.note.c_str());
   for (const BedKnotResult& k : b.knots)
     std::printf(
         " knot %d: contour error near it %.3f, at the true size %.3f ring spacings; detected contours off "

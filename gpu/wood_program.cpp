@@ -83,6 +83,8 @@ void WoodProgram::setModel(const WoodModel& model) {
     program_.setUniformValue(("u_blockKnotOrigin" + index).constData(), toQt(knots[i].origin));
     program_.setUniformValue(("u_blockKnotDirection" + index).constData(), toQt(knots[i].direction));
     program_.setUniformValue(("u_blockKnotSpeed" + index).constData(), knots[i].speed);
+    program_.setUniformValue(("u_blockKnotTaper" + index).constData(), knots[i].taper);
+    program_.setUniformValue(("u_blockKnotTaperAge" + index).constData(), knots[i].taperAge);
   }
 
   const GrowthRates& rates = field.rates();

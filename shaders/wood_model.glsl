@@ -103,6 +103,8 @@ uniform int u_blockKnotCount;
 uniform vec3 u_blockKnotOrigin[kMaxBlockKnots];
 uniform vec3 u_blockKnotDirection[kMaxBlockKnots];  // unit
 uniform float u_blockKnotSpeed[kMaxBlockKnots];
+uniform float u_blockKnotTaper[kMaxBlockKnots];     // BlockKnot::taper (0: the cone of Eq. 7)
+uniform float u_blockKnotTaperAge[kMaxBlockKnots];  // years
 
 // Eq. 2 (powerSmoothMinOf).
 float blockKnotSmoothMin(float a, float b, float k) {
@@ -117,6 +119,14 @@ float blockKnotDistance(int i, vec3 p) {
   float along = max(dot(rel, u_blockKnotDirection[i]), 0.0);
   vec3 d = rel - along * u_blockKnotDirection[i];
   return sqrt(dot(d, d));
+}
+
+// knotSpeedAt: the knot's speed at stem time G, tapering (issue 19 item 2), capped below the reach.
+float blockKnotSpeed(int i, float stemTime) {
+  float taper = u_blockKnotTaper[i];
+  if (!(taper != 0.0)) return u_blockKnotSpeed[i];
+  float v = u_blockKnotSpeed[i] * pow(max(stemTime, 1e-3) / u_blockKnotTaperAge[i], -taper);
+  return min(v, 0.9 * min(P.knotReachStart, P.knotReachEnd));
 }
 
 // BlockKnots::merge: G_k from the stem time; darkness for Sec. 4.3.
@@ -134,7 +144,7 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
       float x = clamp((ratio - P.knotReachStart) / (P.knotReachEnd - P.knotReachStart), 0.0, 1.0);
       window = 1.0 - x * x * (3.0 - 2.0 * x);
     }
-    float time = distance / (u_blockKnotSpeed[i] * P.ringWidth);
+    float time = distance / (blockKnotSpeed(i, stemTime) * P.ringWidth);
     knotMin = min(knotMin, time);
     sumSmoothing += window * (blockKnotSmoothMin(stemTime, time, P.knotSmoothStem) - min(time, stemTime));
     if (stemTime > 0.0) {

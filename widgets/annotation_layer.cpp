@@ -6,6 +6,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QtMath>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -755,7 +756,29 @@ void AnnotationLayer::paintTrace(QPainter& painter, const RingTrace& trace, bool
   painter.restore();
 }
 
+// The knot's edge as an ellipse in the face's true scale, thin and solid: what the fit made the knot's
+// surface pass through.
+void AnnotationLayer::paintKnotOutlines(QPainter& painter) const {
+  for (std::size_t k = 0; k < annotations_.knots.size(); ++k) {
+    const KnotOutline* o = outlineOfMark(k);
+    if (!o || (draggedKnot_ == k && knotMoved_)) continue;
+    const double px = pxPerMm(o->face);
+    painter.save();
+    painter.setClipRect(view_->faceRect(o->face).intersected(QRectF(view_->rect())));
+    painter.translate(toWidget(o->face, o->center));
+    painter.rotate(qRadiansToDegrees(double(o->angleRad)));
+    painter.setBrush(Qt::NoBrush);
+    const QPointF zero(0, 0);
+    painter.setPen(pen(kHalo, 3.0));
+    painter.drawEllipse(zero, o->semiAxesMm.x * px, o->semiAxesMm.y * px);
+    painter.setPen(pen(kKnotColor.lighter(125), 1.4));
+    painter.drawEllipse(zero, o->semiAxesMm.x * px, o->semiAxesMm.y * px);
+    painter.restore();
+  }
+}
+
 void AnnotationLayer::paintKnots(QPainter& painter) const {
+  paintKnotOutlines(painter);
   const auto& knots = annotations_.knots;
   // The marks of one knot joined by a dashed line (across the cross when they are on two faces).
   for (std::size_t a = 0; a < knots.size(); ++a)

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "rings/annotations.hpp"
+#include "rings/knot_outline.hpp"
 
 class QActionGroup;
 class QInputDialog;
@@ -49,6 +50,13 @@ class AnnotationLayer : public QObject {
 
   void setAnnotations(const Annotations& annotations);  // keeps the selection where it still fits
   const Annotations& annotations() const { return annotations_; }
+
+  // The knots' edges the last fit found on the photos (rings/knot_outline.hpp, issue 19 item 2), drawn
+  // around their marks; an outline whose mark has moved since (or is gone) is not drawn.
+  void setKnotOutlines(std::vector<KnotOutline> outlines);
+  const std::vector<KnotOutline>& knotOutlines() const { return knotOutlines_; }
+  // The outline found from mark `knot` (an index into annotations().knots) as it is now, if any.
+  const KnotOutline* outlineOfMark(std::size_t knot) const;
 
   Tool tool() const { return tool_; }
   void setTool(Tool tool);
@@ -108,6 +116,7 @@ class AnnotationLayer : public QObject {
   void paint(QPainter& painter) const;
   void paintTrace(QPainter& painter, const RingTrace& trace, bool selected, bool hovered) const;
   void paintKnots(QPainter& painter) const;
+  void paintKnotOutlines(QPainter& painter) const;
   void paintDraft(QPainter& painter) const;
   bool mousePress(QMouseEvent* event);
   bool mouseMove(QMouseEvent* event);
@@ -139,6 +148,7 @@ class AnnotationLayer : public QObject {
 
   FacesView* view_;
   Annotations annotations_;
+  std::vector<KnotOutline> knotOutlines_;
   Tool tool_ = Tool::Select;
   bool visible_ = true;
   std::vector<std::size_t> selectedTraces_, selectedKnots_;

@@ -27,18 +27,38 @@ void AnnotationLayer::createKnotActions() {
   connect(knotAccuracyAction_, &QAction::triggered, this, &AnnotationLayer::askKnotAccuracyForSelection);
 }
 
+void AnnotationLayer::setKnotOutlines(std::vector<KnotOutline> outlines) {
+  knotOutlines_ = std::move(outlines);
+  view_->update();
+}
+
+const KnotOutline* AnnotationLayer::outlineOfMark(std::size_t knot) const {
+  if (knot >= annotations_.knots.size()) return nullptr;
+  const KnotMark& m = annotations_.knots[knot];
+  for (const KnotOutline& o : knotOutlines_)
+    if (o.found && o.knot == m.knot && o.face == m.face && o.seed == m.point) return &o;
+  return nullptr;
+}
+
 QString AnnotationLayer::knotMarkText(std::size_t knot) const {
   const KnotMark& m = annotations_.knots[knot];
+  const KnotOutline* o = outlineOfMark(knot);
+  const QString edge = o ? tr(" Its edge on the photo: %1 x %2 mm (the fitted knot's size follows it).")
+                               .arg(2.0 * o->semiAxesMm.x, 0, 'f', 1)
+                               .arg(2.0 * o->semiAxesMm.y, 0, 'f', 1)
+                         : QString();
   if (m.released)
     return tr("Knot K%1 on face %2: released, the rings place the knot and this mark only says where to "
               "start (R holds it again; drag to move it)")
-        .arg(m.knot + 1)
-        .arg(QChar(faceLetter(m.face)));
+               .arg(m.knot + 1)
+               .arg(QChar(faceLetter(m.face))) +
+           edge;
   return tr("Knot K%1 on face %2: the fitted knot passes within %3 mm of this mark (drag to move it; M "
             "changes how close, R lets the rings place the knot)")
-      .arg(m.knot + 1)
-      .arg(QChar(faceLetter(m.face)))
-      .arg(double(m.accuracyMm), 0, 'g', 3);
+             .arg(m.knot + 1)
+             .arg(QChar(faceLetter(m.face)))
+             .arg(double(m.accuracyMm), 0, 'g', 3) +
+         edge;
 }
 
 void AnnotationLayer::startKnotDrag(std::size_t knot, QPointF widgetPos) {

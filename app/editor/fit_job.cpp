@@ -112,6 +112,7 @@ GrowthFitResult fitGrowthField(const std::array<GrayImage8, 6>& images, const Bl
   out.rates = *fit.rates;
   out.knots = fit.knots;
   out.report = formatGrowthFieldFitReport(fit.report);
+  out.knotOutlines = fit.report.knotOutlines;
   out.ambiguous = fit.report.pith.ambiguous;
   out.lossRings = fit.report.finalLossRings;
   for (const ContourResidual& c : fit.contours) {

@@ -70,8 +70,9 @@ struct FittedContour {
 struct GrowthFitResult {
   WoodParameters params;  // the input parameters with growth.pith_*, ring_width, ring_offset replaced
   GrowthRates rates;
-  std::vector<BlockKnot> knots;    // fitted from the knot marks (Mokume Sec. 5.2.4)
-  std::vector<ReportLine> report;  // lines for the log: contours, loss, O, V, ambiguity, timings
+  std::vector<BlockKnot> knots;           // fitted from the knot marks (Mokume Sec. 5.2.4)
+  std::vector<ReportLine> report;         // lines for the log: contours, loss, O, V, ambiguity, timings
+  std::vector<KnotOutline> knotOutlines;  // each knot mark's edge on its photo (issue 19 item 2)
   bool ambiguous = false;
   double lossRings = 0;  // final iso-contour loss of the saved field, in ring spacings
   std::vector<FittedContour> contours;

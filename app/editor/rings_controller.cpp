@@ -212,6 +212,7 @@ bool RingsController::applyFit(std::shared_ptr<const GrowthFitResult> fit) {
     return false;
   }
   lastFit_ = fit;
+  annotationLayer_->setKnotOutlines(fit->knotOutlines);
   actions_.otherPith->setEnabled(fit->alternative.has_value());
   showFitResiduals(*fit);
   log(fit->ambiguous ? "warning" : "info",

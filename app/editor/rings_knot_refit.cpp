@@ -1,6 +1,7 @@
 // RingsController: the knots follow their marks (issue 19 item 1). A user's edit of the knot marks on the
 // last fit's field refits the knots alone (fit/knot_refit.hpp) in the background; they land as one undo
 // step while the marks and the stem field are still those they were fitted to.
+#include "annotation_layer.hpp"
 #include "document.hpp"
 #include "field/ring_uncertainty.hpp"
 #include "fit/knot_refit.hpp"
@@ -49,6 +50,13 @@ void RingsController::refitKnots() {
         WoodParameters params = now.params;
         params.knotSmoothStem = refit->kStem;
         document_->applyGrowthField(params, now.rates, tr("Knots Follow Their Marks"), refit->knots);
+        annotationLayer_->setKnotOutlines(refit->outlines);
+        for (const KnotOutline& o : refit->outlines)
+          log(o.found ? "info" : "warning",
+              tr("Knot K%1's edge on face %2: %3")
+                  .arg(o.knot + 1)
+                  .arg(QChar(faceLetter(o.face)))
+                  .arg(QString::fromStdString(o.found ? o.note : "not used: " + o.note)));
         for (const BlockKnotFitEntry& e : refit->entries) {
           if (!e.kept) {
             log("warning", tr("Knot K%1: not placed: %2").arg(e.id + 1).arg(QString::fromStdString(e.note)));

@@ -16,6 +16,11 @@ void validate(const BlockKnot& knot, const std::string& what) {
     throw InputError(what + ": the direction must be a finite, non-zero vector");
   if (!(knot.speed > 0.0f && knot.speed < 1.0f))
     throw InputError(what + ": the speed must lie between 0 and 1 (a fraction of the stem's growth speed)");
+  if (!(std::abs(knot.taper) <= kMaxKnotTaper))
+    throw InputError(what + ": the taper must lie between -" + std::to_string(kMaxKnotTaper) + " and " +
+                     std::to_string(kMaxKnotTaper));
+  if (!(knot.taperAge > 0.0f && std::isfinite(knot.taperAge)))
+    throw InputError(what + ": the taper age must be a positive number of years");
 }
 
 BlockKnots::BlockKnots(std::vector<BlockKnot> knots, const KnotSettings& settings, float ringWidthMm)
@@ -36,8 +41,9 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
   float knotMin = stemTime, sumSmoothing = 0.0f;
   for (const BlockKnot& knot : knots_) {
     const float distance = knotAxisDistance(&knot.origin.x, &knot.direction.x, p);
+    const float speed = knotSpeedAt(knot.speed, knot.taper, knot.taperAge, stemTime, maxKnotSpeed(s));
     const KnotTerm<float> term =
-        knotTerm(stemTime, distance, stemRadius, knot.speed, ringWidth_, s.knotSmoothStem, s);
+        knotTerm(stemTime, distance, stemRadius, speed, ringWidth_, s.knotSmoothStem, s);
     if (!(term.window > 0.0f)) continue;  // out of reach: G unchanged, bit for bit
     knotMin = std::min(knotMin, term.time);
     sumSmoothing += term.smoothing;  // Eq. 6

@@ -15,6 +15,7 @@
 // many knots merged as in Eq. 6: t = min(G, T_1..T_n) + sum_i window_i (smin_i - min_i). Beyond
 // reach_end a knot is skipped, so there G_k equals G bit for bit. The knot is darkened by
 // knots.darkening (Sec. 4.3). Mokume models only alive knots with straight axes (Sec. 7); so does this.
+#include <algorithm>
 #include <cmath>
 #include <glm/vec3.hpp>
 #include <string>
@@ -29,16 +30,45 @@ struct BlockKnot {
   glm::vec3 origin{0.0f};        // block mm: where the knot axis starts (at the pith)
   glm::vec3 direction{1, 0, 0};  // unit, from the pith outward
   float speed = 0.16f;           // v_k: knot growth speed as a fraction of the stem's (knots.speed)
+  // Issue 19 item 2: a branch thickens ever more slowly as the stem grows (Larsson et al. 2022 Sec. 4.1:
+  // the knot speed declines with the stem time), so its diameter along its axis is no straight cone:
+  //   v_k(G) = speed (G / taperAge)^-taper   (knotSpeedAt); 0 = Mokume's cone from the pith.
+  // Fitted where the knot's edge is seen on two faces (fit/block_knot_fit.hpp); taper near 1 is a knot
+  // that stopped thickening, as a dead one does.
+  float taper = 0.0f;
+  float taperAge = 10.0f;  // the stem time G (years from the pith) at which v_k = speed
 
   bool operator==(const BlockKnot&) const = default;
 };
+
+inline constexpr float kMaxKnotTaper = 0.95f;  // below 1: the knot still starts on the pith with no width
+
+// v_k at stem time G (BlockKnot::taper), for any scalar type (Ceres Jets in the fit); capped at
+// maxSpeed, since past the reach a knot could not be the minimum (knotTerm).
+// The fit calls taperedKnotSpeed itself: at taper 0 its Jets keep the derivative in the taper.
+template <typename T>
+T taperedKnotSpeed(const T& speed, const T& taper, float taperAge, const T& stemTime, float maxSpeed) {
+  using std::pow;
+  const T age = stemTime > T(1e-3f) ? stemTime : T(1e-3f);
+  const T v = speed * pow(age / T(taperAge), -taper);
+  return v < T(maxSpeed) ? v : T(maxSpeed);
+}
+template <typename T>
+T knotSpeedAt(const T& speed, const T& taper, float taperAge, const T& stemTime, float maxSpeed) {
+  if (!(taper != T(0))) return speed;  // bit for bit the cone of Eq. 7
+  return taperedKnotSpeed(speed, taper, taperAge, stemTime, maxSpeed);
+}
+// The cap knotTerm's window needs: 0.9 x the nearer reach (the log's cap, field/knot_field.hpp).
+inline float maxKnotSpeed(const KnotSettings& s) {
+  return 0.9f * std::min(s.knotReachStart, s.knotReachEnd);
+}
 
 // The most knots a block may hold (issue 21): every knot is evaluated at every pixel and sample of the
 // block (no culling), so the work of a render grows with pixels x knots. A block has a handful of knots.
 inline constexpr std::size_t kMaxBlockKnots = 1'000;
 
-// Throws InputError naming `what` (e.g. "knots[1]") for a non-finite or zero direction, or a speed
-// outside (0, 1).
+// Throws InputError naming `what` (e.g. "knots[1]") for a non-finite or zero direction, a speed outside
+// (0, 1), a taper outside [-kMaxKnotTaper, kMaxKnotTaper] or a taper age that is not positive.
 void validate(const BlockKnot& knot, const std::string& what);
 
 // The distance from p to the knot's half-line, for any scalar type (Ceres Jets in the fit).

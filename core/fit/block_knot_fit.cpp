@@ -23,22 +23,24 @@ constexpr int kFarPointsPerContour = 16;  // anchor each contour's level away fr
 
 // One contour point near a knot: its G_k (one knot merged into the fixed stem time, Eq. 7 and Eq. 6)
 // against its contour's free level.
+// Parameter blocks per knot: `knot` = origin (3), direction (3), log speed; `taper` = BlockKnot::taper,
+// with the knot's taper age fixed.
 struct NearPointResidual {
   glm::vec3 p;
   double stemTime;
-  float stemRadius, ringWidth;
+  float stemRadius, ringWidth, taperAge;
   const KnotSettings* settings;
 
   template <typename T>
-  bool operator()(const T* knot, const T* kStem, const T* level, T* residual) const {
+  bool operator()(const T* knot, const T* taper, const T* kStem, const T* level, T* residual) const {
     using std::exp;
     using std::sqrt;
     const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
     const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
     const T distance = knotAxisDistance(knot, direction, p);
     const T stem(stemTime);
-    const KnotTerm<T> term =
-        knotTerm(stem, distance, T(stemRadius), exp(knot[6]), ringWidth, kStem[0], *settings);
+    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, stem, maxKnotSpeed(*settings));
+    const KnotTerm<T> term = knotTerm(stem, distance, T(stemRadius), speed, ringWidth, kStem[0], *settings);
     T merged = stem;
     if (term.window > T(0)) merged = (term.time < stem ? term.time : stem) + term.smoothing;
     residual[0] = merged - level[0];
@@ -71,11 +73,12 @@ void undeformedStem(const T* pith, const glm::vec3& p, float ringWidth, T& time,
 
 struct JointNearResidual {
   glm::vec3 p;
-  float ringWidth;
+  float ringWidth, taperAge;
   const KnotSettings* settings;
 
   template <typename T>
-  bool operator()(const T* pith, const T* knot, const T* kStem, const T* level, T* residual) const {
+  bool operator()(const T* pith, const T* knot, const T* taper, const T* kStem, const T* level,
+                  T* residual) const {
     using std::exp;
     using std::sqrt;
     T stem, radius;
@@ -83,7 +86,8 @@ struct JointNearResidual {
     const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
     const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
     const T distance = knotAxisDistance(knot, direction, p);
-    const KnotTerm<T> term = knotTerm(stem, distance, radius, exp(knot[6]), ringWidth, kStem[0], *settings);
+    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, stem, maxKnotSpeed(*settings));
+    const KnotTerm<T> term = knotTerm(stem, distance, radius, speed, ringWidth, kStem[0], *settings);
     T merged = stem;
     if (term.window > T(0)) merged = (term.time < stem ? term.time : stem) + term.smoothing;
     residual[0] = merged - level[0];
@@ -125,6 +129,44 @@ struct MarkResidual {
     residual[0] = beyond <= T(0)  ? T(0)
                   : beyond < knee ? T(weight) * beyond * beyond / (T(2) * knee)
                                   : T(weight) * (beyond - T(0.5) * knee);
+    return true;
+  }
+};
+
+// Issue 19 item 2: a point of the knot's edge seen on a photo (rings/knot_outline.hpp) lies on the knot's
+// surface, where its own time equals the stem's (T_k = d_k / (v w) = G: Eq. 7's two arguments equal). In
+// the stem's ring spacings, as the contours' residuals: (d_k - v_k(G) w G) / w.
+struct EdgeGeometry {
+  glm::vec3 p;
+  float ringWidth, taperAge, maxSpeed;
+  template <typename T>
+  T gap(const T* knot, const T* taper, const T& stemTime) const {
+    using std::exp;
+    using std::sqrt;
+    const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
+    const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
+    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, stemTime, maxSpeed);
+    return knotAxisDistance(knot, direction, p) / T(ringWidth) - speed * stemTime;
+  }
+};
+
+struct KnotEdgeResidual {
+  EdgeGeometry edge;
+  double stemTime;  // G at p, fixed
+  template <typename T>
+  bool operator()(const T* knot, const T* taper, T* residual) const {
+    residual[0] = edge.gap(knot, taper, T(stemTime));
+    return true;
+  }
+};
+
+struct JointKnotEdgeResidual {
+  EdgeGeometry edge;
+  template <typename T>
+  bool operator()(const T* pith, const T* knot, const T* taper, T* residual) const {
+    T stem, radius;
+    undeformedStem(pith, edge.p, edge.ringWidth, stem, radius);
+    residual[0] = edge.gap(knot, taper, stem);
     return true;
   }
 };
@@ -303,7 +345,30 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     for (std::size_t k = 0; k < initial.size(); ++k)
       stride[k] = std::max(1, (nearCount[k] + options.maxNearPoints - 1) / options.maxNearPoints);
 
-  // Parameters: per knot origin (3), direction (3), log speed; the shared k_stem; a level per contour.
+  // The knots' edges on the photos (options.outlines), lifted onto their faces. A knot seen on two faces
+  // or more has its taper fitted too (its diameter at two distances from the pith); its taper age, where
+  // its speed holds, is then the median stem time of its edges (a cone stays the same cone).
+  std::vector<std::vector<glm::vec3>> edges(initial.size());
+  std::vector<bool> taperFree(initial.size(), false);
+  for (std::size_t k = 0; k < initial.size(); ++k) {
+    BlockKnotFitEntry& e = out.entries[entryOf[k]];
+    for (const KnotOutline& o : options.outlines) {
+      if (o.knot != e.id || !o.found || o.edge.empty()) continue;
+      ++e.outlines;
+      for (glm::vec2 q : o.edge) edges[k].push_back(faceMmToBlock(block, o.face, q));
+    }
+    e.edgePoints = static_cast<int>(edges[k].size());
+    taperFree[k] = e.outlines >= 2;
+    if (edges[k].empty() || initial[k].taper != 0.0f) continue;
+    std::vector<double> ages;
+    for (const glm::vec3& p : edges[k]) ages.push_back(stem.evaluate(pith.toCylindrical(p)));
+    initial[k].taperAge = std::max(0.1f, static_cast<float>(lowerMedian(ages)));
+  }
+
+  // Parameters: per knot origin (3), direction (3), log speed, and its taper; the shared k_stem; a level
+  // per contour.
+  std::vector<double> taperParams(initial.size());
+  for (std::size_t k = 0; k < initial.size(); ++k) taperParams[k] = initial[k].taper;
   std::vector<std::array<double, 7>> knotParams(initial.size());
   for (std::size_t k = 0; k < initial.size(); ++k) {
     const BlockKnot& b = initial[k];
@@ -338,15 +403,15 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
       if (seen[k]++ % stride[k] != 0) continue;
       ++fittedNear[k];
       if (freePith) {
-        auto* cost = new ceres::AutoDiffCostFunction<JointNearResidual, 1, 6, 7, 1, 1>(
-            new JointNearResidual{contours.points[i], ringWidth, &settings});
+        auto* cost = new ceres::AutoDiffCostFunction<JointNearResidual, 1, 6, 7, 1, 1, 1>(
+            new JointNearResidual{contours.points[i], ringWidth, initial[k].taperAge, &settings});
         problem.AddResidualBlock(cost, new ceres::SoftLOneLoss(0.1), pithParams.data(), knotParams[k].data(),
-                                 &kStem, &levels[c]);
+                                 &taperParams[k], &kStem, &levels[c]);
       } else {
-        auto* cost = new ceres::AutoDiffCostFunction<NearPointResidual, 1, 7, 1, 1>(
-            new NearPointResidual{contours.points[i], stemTime[i], stemRadius[i], ringWidth, &settings});
-        problem.AddResidualBlock(cost, new ceres::SoftLOneLoss(0.1), knotParams[k].data(), &kStem,
-                                 &levels[c]);
+        auto* cost = new ceres::AutoDiffCostFunction<NearPointResidual, 1, 7, 1, 1, 1>(new NearPointResidual{
+            contours.points[i], stemTime[i], stemRadius[i], ringWidth, initial[k].taperAge, &settings});
+        problem.AddResidualBlock(cost, new ceres::SoftLOneLoss(0.1), knotParams[k].data(), &taperParams[k],
+                                 &kStem, &levels[c]);
       }
       knotInProblem[k] = true;
     }
@@ -365,6 +430,32 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
         problem.AddResidualBlock(cost, new ceres::SoftLOneLoss(0.1), &levels[c]);
       }
     }
+  }
+  // The edges' residuals: together as heavy as the knot's contour points.
+  for (std::size_t k = 0; k < initial.size(); ++k) {
+    const BlockKnotFitEntry& e = out.entries[entryOf[k]];
+    if (edges[k].empty()) continue;
+    // The weight scales the robust loss, not the residual: the loss still turns from squares to absolute
+    // values at 0.1 ring spacings (a pixel or two), as the contours' does.
+    const double weight = std::max(
+        1.0, static_cast<double>(std::max(fittedNear[k], e.edgePoints)) / static_cast<double>(e.edgePoints));
+    const auto edgeLoss = [weight] {
+      return new ceres::ScaledLoss(new ceres::SoftLOneLoss(0.1), weight, ceres::TAKE_OWNERSHIP);
+    };
+    for (const glm::vec3& p : edges[k]) {
+      const EdgeGeometry edge{p, ringWidth, initial[k].taperAge, maxKnotSpeed(settings)};
+      if (freePith) {
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<JointKnotEdgeResidual, 1, 6, 7, 1>(
+                                     new JointKnotEdgeResidual{edge}),
+                                 edgeLoss(), pithParams.data(), knotParams[k].data(), &taperParams[k]);
+      } else {
+        const double g = stem.evaluate(pith.toCylindrical(p));
+        problem.AddResidualBlock(
+            new ceres::AutoDiffCostFunction<KnotEdgeResidual, 1, 7, 1>(new KnotEdgeResidual{edge, g}),
+            edgeLoss(), knotParams[k].data(), &taperParams[k]);
+      }
+    }
+    knotInProblem[k] = true;
   }
   for (std::size_t k = 0; k < initial.size(); ++k) {
     BlockKnotFitEntry& e = out.entries[entryOf[k]];
@@ -387,6 +478,12 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     }
     problem.SetParameterLowerBound(knotParams[k].data(), 6, std::log(kMinSpeed));
     problem.SetParameterUpperBound(knotParams[k].data(), 6, std::log(maxSpeed));
+    if (taperFree[k]) {
+      problem.SetParameterLowerBound(&taperParams[k], 0, -kMaxKnotTaper);
+      problem.SetParameterUpperBound(&taperParams[k], 0, kMaxKnotTaper);
+    } else {
+      problem.SetParameterBlockConstant(&taperParams[k]);  // one face's edge: no second diameter
+    }
     e.optimized = true;
   }
   const bool anyKnot = std::any_of(knotInProblem.begin(), knotInProblem.end(), [](bool b) { return b; });
@@ -396,7 +493,9 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
                              nullptr, pithParams.data());
   }
   if (anyKnot) {
-    if (options.fitSmoothness) {
+    if (!problem.HasParameterBlock(&kStem)) {
+      // Only edges (no contour near any knot): nothing to fit the smoothness to.
+    } else if (options.fitSmoothness) {
       problem.SetParameterLowerBound(&kStem, 0, 0.3);
       problem.SetParameterUpperBound(&kStem, 0, 10.0);
       out.smoothnessFitted = true;
@@ -424,6 +523,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     fitted[k].origin = glm::vec3(q[0], q[1], q[2]);
     fitted[k].direction = glm::normalize(glm::vec3(q[3], q[4], q[5]));
     fitted[k].speed = static_cast<float>(std::exp(q[6]));
+    fitted[k].taper = static_cast<float>(taperParams[k]);
   }
   out.kStem = static_cast<float>(kStem);
   if (pithOut) *pithOut = pithParams;
@@ -461,6 +561,21 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
         e.markDistanceMm = std::max(e.markDistanceMm, static_cast<double>(d));
         e.marksHeld = e.marksHeld && d <= m.accuracyMm;
       }
+    }
+    if (!edges[k].empty()) {
+      const GrowthField& g = moved ? *moved : stem;
+      const double v = fitted[k].speed;
+      const glm::dvec3 o(fitted[k].origin);
+      const glm::dvec3 d(fitted[k].direction);
+      const double q[7] = {o.x, o.y, o.z, d.x, d.y, d.z, std::log(v)};
+      const double taper = fitted[k].taper;
+      std::vector<double> gaps;
+      for (const glm::vec3& p : edges[k]) {
+        const EdgeGeometry edge{p, ringWidth, fitted[k].taperAge, maxKnotSpeed(settings)};
+        const double time = g.evaluate(g.axis().toCylindrical(p));
+        gaps.push_back(std::abs(edge.gap(q, &taper, time)) * ringWidth);
+      }
+      e.edgeDistanceMm = lowerMedian(gaps);
     }
     std::vector<bool> near(n);
     for (int c = 0; c < contours.count(); ++c)

@@ -21,6 +21,7 @@
 #include "field/growth_field.hpp"
 #include "fit/iso_contour_loss.hpp"
 #include "rings/annotations.hpp"
+#include "rings/knot_outline.hpp"
 #include "util/progress.hpp"
 
 namespace kerf {
@@ -41,6 +42,11 @@ struct BlockKnotFitOptions {
   // Knots to start from instead of the axes of the marks (matched by id), e.g. those fitted on the
   // undeformed field before the distortion stage.
   std::vector<BlockKnot> start;
+  // The knots' edges seen on the photos (rings/knot_outline.hpp, matched by id; issue 19 item 2): the
+  // knot's surface, where T_k = G, passes through their points. Together they weigh as much as the
+  // contour points fitted near the knot. Without them the contours leave the knot's size free and it
+  // comes out far too thin (docs/knots.md, the test bed).
+  std::vector<KnotOutline> outlines;
 };
 
 // One knot id's outcome.
@@ -59,7 +65,11 @@ struct BlockKnotFitEntry {
   bool marksHeld = true;
   int releasedMarks = 0;
   int contours = 0, nearPoints = 0;  // contours and points fitted near the knot
-  int lossPoints = 0;                // points within lossKnotRadii
+  // Issue 19 item 2: the outlines fitted (faces), their edge points, and how far the fitted knot's
+  // surface passes from them (median over the points, mm, measured in the stem's ring spacings x w).
+  int outlines = 0, edgePoints = 0;
+  double edgeDistanceMm = 0;
+  int lossPoints = 0;  // points within lossKnotRadii
   // Iso-contour error of the points within lossKnotRadii (mean |G - contour median|, ring spacings =
   // years): without any knot, with the initial knot, with the fitted one.
   double lossWithout = 0, lossInitial = 0, lossFitted = 0;

@@ -223,6 +223,9 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     }
   }
   report.anatomySeconds = anatomyClock.seconds();
+  // Issue 19 item 2: each marked knot's edge on its photo, which holds the knot's size in both knot stages.
+  if (options.fitKnots && options.useKnotOutlines && !input.knotMarks.empty())
+    report.knotOutlines = detectKnotOutlines(input.photos, block, input.knotMarks);
   PithFitOptions pithOptions;
   pithOptions.principal = options.principal;
   if (report.anatomy && options.useAnatomy && options.anatomyWeight > 0) {
@@ -268,8 +271,10 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
       // Sec. 5.2.4); the rates are then fitted to the contours away from them, so that they do not bend
       // around a knot themselves, and the knots are refined on the final field below.
       const KnotSettings settings = KnotSettings::fromParameters(field.params);
+      BlockKnotFitOptions knotOptions;
+      knotOptions.outlines = report.knotOutlines;
       const PithAndKnotsFit joint =
-          fitPithAndKnots(contours, block, axis, r.rings.ringWidthMm, input.knotMarks, settings);
+          fitPithAndKnots(contours, block, axis, r.rings.ringWidthMm, input.knotMarks, settings, knotOptions);
       field.knots = joint.knots.knots;
       field.knotSmoothStem = joint.knots.kStem;
       r.knotPithMovedDeg =
@@ -369,6 +374,7 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     KnotSettings settings = KnotSettings::fromParameters(out.params);
     BlockKnotFitOptions knotOptions;
     knotOptions.start = chosen->knots;  // from the undeformed field
+    knotOptions.outlines = report.knotOutlines;
     if (!chosen->knots.empty()) settings.knotSmoothStem = chosen->knotSmoothStem;
     const BlockKnotFitResult knots = fitBlockKnots(contours, block, stem, input.knotMarks, settings,
                                                    knotOptions, progress.part(0.95, 0.97));
@@ -553,6 +559,18 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
       lines.push_back(format("  knot %d: its %d mark(s) released, only seeding it: the rings placed the knot",
                              k.id, k.releasedMarks));
     }
+    for (const KnotOutline& o : r.knotOutlines)
+      if (o.knot == k.id)
+        lines.push_back(format("  knot %d's edge on face %c: %s", k.id, faceLetter(o.face),
+                               o.found ? o.note.c_str() : ("not used: " + o.note).c_str()));
+    if (k.edgePoints > 0)
+      lines.push_back(format(
+          "  knot %d's surface passes %.2f mm (median) from its %d edge points on %d face(s)%s", k.id,
+          k.edgeDistanceMm, k.edgePoints, k.outlines,
+          k.outlines >= 2
+              ? format("; taper %.3f (speed %.3f at %.1f years from the pith)", b.taper, b.speed, b.taperAge)
+                    .c_str()
+              : ""));
     lines.push_back(
         format("  iso-contour error near knot %d (%d points within 3 knot radii; %d points on %d "
                "contours fitted): %.4f without a knot, %.4f initial, %.4f fitted (ring spacings)",

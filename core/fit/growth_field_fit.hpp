@@ -68,6 +68,9 @@ struct GrowthFieldFitOptions {
   bool fitColours = true;
   // Knots from input.knotMarks (not with pithOnly).
   bool fitKnots = true;
+  // Their edges seen on the photos hold their size (rings/knot_outline.hpp, issue 19 item 2); false: the
+  // contours alone size them (Mokume Sec. 5.2.4), which leaves the knots far too thin (docs/knots.md).
+  bool useKnotOutlines = true;
   // A bootstrap replicate (fit/ring_uncertainty.hpp): the contours are drawn with replacement, whole
   // (the points along one contour do not err independently), with this seed.
   std::optional<std::uint64_t> resampleContoursSeed;
@@ -110,6 +113,7 @@ struct GrowthFieldFitReport {
   double extractSeconds = 0, ringSeconds = 0, distortionSeconds = 0, placementSeconds = 0;
   // Knots (Mokume Sec. 5.2.4): one entry per marked knot id; k_stem fitted when any knot was optimised.
   std::vector<BlockKnotFitEntry> knots;
+  std::vector<KnotOutline> knotOutlines;  // one per knot mark, as found on its photo (issue 19 item 2)
   bool knotSmoothnessFitted = false;
   float knotSmoothStem = 0;
   int knotIterations = 0;

@@ -1,5 +1,7 @@
 #include "fit/knot_refit.hpp"
 
+#include <optional>
+
 #include "field/growth_field.hpp"
 #include "fit/held_out_faces.hpp"
 #include "util/resource_usage.hpp"
@@ -20,16 +22,21 @@ KnotRefit refitKnotsToMarks(const GrowthFieldFitInput& input, const Block& block
   out.kStem = params.knotSmoothStem;
   if (marks.empty()) return out;
   // The same contours as the fit, without the faces it held out.
-  const IsoContours contours =
-      sampleContours(input.heldOut.empty() ? input : withoutHeldOutFaces(input), block);
+  std::optional<GrowthFieldFitInput> stripped;  // not a copy of the photos unless faces are held out
+  if (!input.heldOut.empty()) stripped = withoutHeldOutFaces(input);
+  const GrowthFieldFitInput& seen = stripped ? *stripped : input;
+  const IsoContours contours = sampleContours(seen, block);
   const GrowthField stem(params, rates);
   BlockKnotFitOptions options;
   options.maxNearPoints = kLiveRefitNearPoints;
+  // The knots' edges around the marks as they are now (a moved mark seeds its outline where it lies).
+  options.outlines = detectKnotOutlines(seen.photos, block, marks);
   const BlockKnotFitResult fit =
       fitBlockKnots(contours, block, stem, marks, KnotSettings::fromParameters(params), options, progress);
   out.knots = fit.knots;
   if (fit.smoothnessFitted) out.kStem = fit.kStem;
   out.entries = fit.entries;
+  out.outlines = options.outlines;
   out.seconds = clock.seconds();
   return out;
 }

@@ -19,6 +19,7 @@ struct KnotRefit {
   std::vector<BlockKnot> knots;  // the field's knots now (Project::knots)
   float kStem = 0;               // knots.k_stem after the refit
   std::vector<BlockKnotFitEntry> entries;
+  std::vector<KnotOutline> outlines;  // each mark's knot edge on its photo, as the refit used them
   double seconds = 0;
 };
 

@@ -25,11 +25,17 @@ glm::vec3 readVec3(const json& value, const std::string& what) {
 
 json blockKnotsToJson(const std::vector<BlockKnot>& knots) {
   json out = json::array();
-  for (const BlockKnot& k : knots)
-    out.push_back({{"id", k.id},
-                   {"origin", {k.origin.x, k.origin.y, k.origin.z}},
-                   {"direction", {k.direction.x, k.direction.y, k.direction.z}},
-                   {"speed", k.speed}});
+  for (const BlockKnot& k : knots) {
+    json knot = {{"id", k.id},
+                 {"origin", {k.origin.x, k.origin.y, k.origin.z}},
+                 {"direction", {k.direction.x, k.direction.y, k.direction.z}},
+                 {"speed", k.speed}};
+    if (k.taper != BlockKnot{}.taper || k.taperAge != BlockKnot{}.taperAge) {  // a plain cone as before
+      knot["taper"] = k.taper;
+      knot["taper_age_years"] = k.taperAge;
+    }
+    out.push_back(std::move(knot));
+  }
   return out;
 }
 
@@ -44,9 +50,11 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
     const json& entry = in[i];
     if (!entry.is_object()) throw InputError(what + " must be an object, got " + describeJson(entry));
     for (const auto& [key, value] : entry.items()) {
-      if (key != "id" && key != "origin" && key != "direction" && key != "speed")
+      if (key != "id" && key != "origin" && key != "direction" && key != "speed" && key != "taper" &&
+          key != "taper_age_years")
         throw InputError(what + " has an unknown key \"" + key +
-                         "\" (written by a newer Kerf? known: id, origin, direction, speed)");
+                         "\" (written by a newer Kerf? known: id, origin, direction, speed, taper, "
+                         "taper_age_years)");
     }
     for (const char* key : {"id", "origin", "direction", "speed"})
       if (!entry.contains(key)) throw InputError(what + " lacks \"" + key + "\"");
@@ -57,6 +65,12 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
     knot.direction = readVec3(entry["direction"], what + ".direction");
     if (!entry["speed"].is_number()) throw InputError(what + ".speed must be a number");
     knot.speed = checkedNumber<float>(entry["speed"].get<double>(), what + ".speed");
+    for (const auto& [key, member] :
+         {std::pair{"taper", &knot.taper}, std::pair{"taper_age_years", &knot.taperAge}}) {
+      if (!entry.contains(key)) continue;
+      if (!entry[key].is_number()) throw InputError(what + "." + key + " must be a number");
+      *member = checkedNumber<float>(entry[key].get<double>(), what + "." + key);
+    }
     validate(knot, what);
     knots.push_back(knot);
   }

@@ -1,11 +1,13 @@
 // Issue 19 item 1 in the editor: on a fitted block with a marked knot, dragging a knot mark refits the
 // knot in the background (RingsController::refitKnots) and the new knot passes within the mark's
 // accuracy of where the mark now is; it is one undo step of its own; releasing the marks refits too.
+#include <QDir>
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+#include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
 
@@ -14,6 +16,7 @@
 #include "document.hpp"
 #include "faces_view.hpp"
 #include "field/block_knots.hpp"
+#include "field/growth_field.hpp"
 #include "gpu/surface_format.hpp"
 #include "main_window.hpp"
 #include "rings/annotations.hpp"
@@ -35,6 +38,7 @@ class TestKnotsFollowMarks : public QObject {
   void cleanupTestCase() { window_.reset(); }
 
  private:
+  void checkOutlinesFollowTheMarks();
   Document* document() const { return window_->document(); }
   // The fitted knot's axis: its distance from mark `i` in block mm.
   double axisToMark(std::size_t i) const {
@@ -81,6 +85,67 @@ void TestKnotsFollowMarks::initTestCase() {
   QCOMPARE(document()->project().knots.size(), 1u);
   for (std::size_t i = 0; i < 2; ++i)
     QVERIFY2(axisToMark(i) <= 1.0, qPrintable(QString::number(axisToMark(i))));
+  // Issue 19 item 2: the knot's edge is found where it enters (face F, round) and where it leaves (face B,
+  // long and oblique), is drawn around its marks, and the fitted knot's cross-section on each face is
+  // the outline's size.
+  checkOutlinesFollowTheMarks();
+}
+
+void TestKnotsFollowMarks::checkOutlinesFollowTheMarks() {
+  AnnotationLayer* layer = window_->annotationLayer();
+  const Project& p = document()->project();
+  QCOMPARE(layer->knotOutlines().size(), 2u);
+  int found = 0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const KnotOutline* o = layer->outlineOfMark(i);
+    std::printf("knot mark %zu on %c: %s\n", i, faceLetter(layer->knotOutlines()[i].face),
+                layer->knotOutlines()[i].note.c_str());
+    if (!o) {
+      QVERIFY(!layer->knotOutlines()[i].note.empty());
+      continue;
+    }
+    ++found;
+    // The fitted knot's width on the face along the outline's two axes, from the field itself.
+    const KnotMark& m = p.annotations.knots[i];
+    const GrowthField stem(p.params, *p.rates);
+    const KnotSettings settings = KnotSettings::fromParameters(p.params);
+    const auto inKnot = [&](glm::vec3 q) {  // T_k < G (Mokume Eq. 7), with the knot's taper
+      const float g = stem.evaluate(q);
+      for (const BlockKnot& k : p.knots) {
+        const float v = knotSpeedAt(k.speed, k.taper, k.taperAge, g, maxKnotSpeed(settings));
+        if (knotAxisDistance(&k.origin.x, &k.direction.x, q) / (v * p.params.ringWidth) < g) return true;
+      }
+      return false;
+    };
+    for (int axis = 0; axis < 2; ++axis) {
+      const float angle = o->angleRad + (axis == 0 ? 0.0f : 1.5707963f);
+      const glm::vec2 dir(std::cos(angle), std::sin(angle));
+      float width = 0;
+      for (float sign : {-1.0f, 1.0f}) {
+        float r = 0;
+        while (r < 15.0f && inKnot(faceMmToBlock(p.block, m.face, o->center + sign * r * dir))) r += 0.05f;
+        width += r;
+      }
+      const float seen = 2.0f * (axis == 0 ? o->semiAxesMm.x : o->semiAxesMm.y);
+      std::printf("knot mark %zu on %c, axis %d: outline %.2f mm, fitted knot %.2f mm\n", i,
+                  faceLetter(m.face), axis, seen, width);
+      QVERIFY2(std::abs(width - seen) < 0.2f * seen + 0.5f,
+               qPrintable(QString("%1 vs %2").arg(width).arg(seen)));
+    }
+  }
+  QCOMPARE(found, 2);
+  // To look at: the outlines around the marks, zoomed on each face.
+  QVERIFY(QDir().mkpath(KERF_TEST_ARTIFACTS_DIR));
+  FacesView* view = window_->facesView();
+  for (std::size_t i = 0; i < 2; ++i) {
+    const KnotMark& m = p.annotations.knots[i];
+    view->fitToView();
+    view->setZoom(4.0, layer->toWidget(m.face, m.point));
+    QTest::qWait(50);
+    QVERIFY(view->grab().toImage().save(
+        QString(KERF_TEST_ARTIFACTS_DIR "/knot_outline_%1.png").arg(QChar(faceLetter(m.face)))));
+  }
+  view->fitToView();
 }
 
 void TestKnotsFollowMarks::draggingAMarkRefitsTheKnotThroughIt() {
@@ -114,6 +179,9 @@ void TestKnotsFollowMarks::draggingAMarkRefitsTheKnotThroughIt() {
       "the marks to be still)\n",
       clock.elapsed() / 1000.0);
   QVERIFY(document()->project().knots != before);
+  // The outline is found again from the moved mark (3 mm off the knot's centre, still inside it).
+  QVERIFY(window_->annotationLayer()->outlineOfMark(0) != nullptr);
+  QCOMPARE(window_->annotationLayer()->outlineOfMark(0)->seed, moved);
   for (std::size_t i = 0; i < 2; ++i)
     QVERIFY2(axisToMark(i) <= 1.0, qPrintable(QString::number(axisToMark(i))));
   QCOMPARE(document()->undoStack()->count(), steps + 1);  // the refit is its own step

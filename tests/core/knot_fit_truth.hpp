@@ -78,10 +78,13 @@ inline double trueKnotDiameter(const KnotField& field, const Board& board, int k
 
 // The fitted knot's diameter where its axis meets the face plane: the knot's wood, T_k < G
 // (field/block_knots.hpp, Mokume Sec. 5.2.4 Eq. 7), cut perpendicular to its axis.
-inline double fittedKnotDiameter(const GrowthField& stem, const BlockKnot& knot, const glm::vec3& onAxis) {
+inline double fittedKnotDiameter(const GrowthField& stem, const BlockKnot& knot, const glm::vec3& onAxis,
+                                 const KnotSettings& settings) {
   const glm::vec3 d = glm::normalize(knot.direction);
   return crossSectionDiameter(onAxis, d, [&](const glm::vec3& q) {
-    return knotAxisDistance(&knot.origin.x, &d.x, q) / (knot.speed * stem.ringWidth()) < stem.evaluate(q);
+    const float g = stem.evaluate(q);
+    const float v = knotSpeedAt(knot.speed, knot.taper, knot.taperAge, g, maxKnotSpeed(settings));
+    return knotAxisDistance(&knot.origin.x, &d.x, q) / (v * stem.ringWidth()) < g;
   });
 }
 

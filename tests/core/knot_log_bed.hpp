@@ -224,7 +224,7 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
     for (int e = 0; e < 2; ++e) {
       const glm::vec3 onFace = axisOnFacePlane(*found, block, c[e].face);
       r.offsetMm[e] = glm::length(onFace - c[e].point);
-      r.fittedDiameterMm[e] = fittedKnotDiameter(fitted.stem, *found, onFace);
+      r.fittedDiameterMm[e] = fittedKnotDiameter(fitted.stem, *found, onFace, fitted.knots.settings());
     }
     r.cut = cutRingErrors(truth, fitted, block, cut, near, options.cutStepMm);
     std::vector<BlockKnot> resized = fit.knots;

@@ -285,3 +285,82 @@ TEST(BlockKnotFit, TheLiveRefitFollowsAMovedMark) {
   EXPECT_TRUE(follows.entries[0].marksHeld);
   EXPECT_GT(offTruth(follows.knots[0]), 1.0);  // it went with the mark
 }
+
+// Issue 19 item 2: the knot's edge seen on the photos (rings/knot_outline.hpp) holds its size. Edge points
+// exactly on a true knot's surface (T_k = G) on the two marked faces, and no contours at all: the fit
+// finds the knot's speed, and its taper (a diameter at two distances from the pith), from the edges
+// alone; without them the knot keeps the schema's speed.
+std::vector<KnotOutline> exactOutlines(const KnottySample& s, const BlockKnot& truth) {
+  const float w = s.stem.ringWidth();
+  // T_k - G along a ray on the face from the knot's crossing: negative inside the knot.
+  const auto gap = [&](glm::vec3 p) {
+    const float g = s.stem.evaluate(s.pith.toCylindrical(p));
+    const float v = knotSpeedAt(truth.speed, truth.taper, truth.taperAge, g, maxKnotSpeed(s.settings));
+    return knotAxisDistance(&truth.origin.x, &truth.direction.x, p) / (v * w) - g;
+  };
+  std::vector<KnotOutline> outlines;
+  for (const auto& [face, z] : {std::pair{FaceId::F, -20.0f}, std::pair{FaceId::A, 20.0f}}) {
+    KnotOutline o;
+    o.knot = truth.id;
+    o.face = face;
+    o.found = true;
+    const glm::vec2 centre = blockToFaceMm(s.block, face, crossingAtZ(truth, z));
+    for (int a = 0; a < 90; ++a) {
+      const float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(a) / 90.0f;
+      const glm::vec2 dir(std::cos(angle), std::sin(angle));
+      float lo = 0.0f, hi = 15.0f;
+      EXPECT_LT(gap(faceMmToBlock(s.block, face, centre)), 0.0f);
+      EXPECT_GT(gap(faceMmToBlock(s.block, face, centre + hi * dir)), 0.0f);
+      for (int i = 0; i < 40; ++i) {
+        const float mid = 0.5f * (lo + hi);
+        (gap(faceMmToBlock(s.block, face, centre + mid * dir)) < 0.0f ? lo : hi) = mid;
+      }
+      o.edge.push_back(centre + lo * dir);
+    }
+    outlines.push_back(o);
+  }
+  return outlines;
+}
+
+TEST(BlockKnotFit, TheKnotsEdgeOnThePhotosHoldsItsSizeAndTaper) {
+  const KnottySample s;
+  BlockKnot tapering = s.truth;
+  tapering.taper = 0.4f;
+  tapering.taperAge = 12.0f;
+  for (const BlockKnot& truth : {s.truth, tapering}) {
+    BlockKnotFitOptions options;
+    options.outlines = exactOutlines(s, truth);
+    const BlockKnotFitResult fit =
+        fitBlockKnots(IsoContours{}, s.block, s.stem, s.marks, s.settings, options);
+    ASSERT_EQ(fit.entries.size(), 1u);
+    const BlockKnotFitEntry& e = fit.entries[0];
+    ASSERT_TRUE(e.optimized) << e.note;
+    EXPECT_EQ(e.outlines, 2);
+    EXPECT_EQ(e.edgePoints, 180);
+    const BlockKnot& k = fit.knots[0];
+    // The speed at the truth's taper age.
+    const float speed = knotSpeedAt(k.speed, k.taper, k.taperAge, truth.taperAge, maxKnotSpeed(s.settings));
+    std::printf(
+        "edges alone: speed %.4f at %.0f years (true %.3f), taper %.3f (true %.2f), the surface %.3f mm "
+        "from the edge points\n",
+        speed, truth.taperAge, truth.speed, k.taper, truth.taper, e.edgeDistanceMm);
+    EXPECT_NEAR(speed, truth.speed, 0.01 * truth.speed);
+    EXPECT_NEAR(k.taper, truth.taper, 0.02);
+    EXPECT_LT(e.edgeDistanceMm, 0.05);
+    EXPECT_TRUE(e.marksHeld);
+  }
+
+  // One face's edge gives one diameter: the speed is fitted, the taper stays a cone's.
+  BlockKnotFitOptions one;
+  one.outlines = {exactOutlines(s, tapering)[1]};
+  const BlockKnotFitResult single = fitBlockKnots(IsoContours{}, s.block, s.stem, s.marks, s.settings, one);
+  ASSERT_TRUE(single.entries[0].optimized);
+  EXPECT_EQ(single.knots[0].taper, 0.0f);
+  EXPECT_LT(single.entries[0].edgeDistanceMm, 0.05);  // a cone through that one outline
+
+  // Without the edges (and no contours) nothing sizes the knot: it keeps its initial speed.
+  const BlockKnotFitResult bare = fitBlockKnots(IsoContours{}, s.block, s.stem, s.marks, s.settings);
+  EXPECT_FALSE(bare.entries[0].optimized);
+  EXPECT_EQ(bare.entries[0].edgePoints, 0);
+  EXPECT_FLOAT_EQ(bare.knots[0].speed, s.settings.knotSpeed);
+}

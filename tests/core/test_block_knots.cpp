@@ -145,9 +145,15 @@ TEST(BlockKnots, ProjectFilesKeepKnotsAndOldFilesLoadWithout) {
   const auto dir = kerf::testing::scratchFolder("block_knots", "project");
   Project project;
   project.knots = {BlockKnot{0, {1, 2, -50}, {0.1f, 0.2f, 0.97f}, 0.12f},
-                   BlockKnot{4, {0, 5, -50}, {0, 0, 1}, 0.2f}};
+                   BlockKnot{4, {0, 5, -50}, {0, 0, 1}, 0.2f, 0.35f, 17.25f}};  // a tapering knot
   saveProject(project, dir / "knots.kerf");
   EXPECT_EQ(loadProject(dir / "knots.kerf").knots, project.knots);
+  {
+    nlohmann::json json;
+    std::ifstream(dir / "knots.kerf") >> json;
+    EXPECT_FALSE(json["knots"][0].contains("taper"));  // a cone is written as before the taper
+    EXPECT_EQ(json["knots"][1]["taper_age_years"], 17.25);
+  }
 
   // A file without the key (every file before knots) has none, and saving none writes no key.
   project.knots.clear();
@@ -183,5 +189,12 @@ TEST(BlockKnots, MalformedOrNewerEntriesNameTheEntry) {
       error(R"([{"id": 0, "origin": [0, 0, 0], "direction": [0, 0, 1], "speed": 0.1, "curvature": 2}])");
   EXPECT_NE(newer.find("knots[0]"), std::string::npos);
   EXPECT_NE(newer.find("curvature"), std::string::npos);
+  EXPECT_NE(error(R"([{"id": 0, "origin": [0, 0, 0], "direction": [0, 0, 1], "speed": 0.1, "taper": 1.2}])")
+                .find("knots[0]: the taper"),
+            std::string::npos);
+  EXPECT_NE(
+      error(R"([{"id": 0, "origin": [0, 0, 0], "direction": [0, 0, 1], "speed": 0.1, "taper_age_years": 0}])")
+          .find("taper age"),
+      std::string::npos);
   EXPECT_NE(error(R"({"id": 0})").find("knots"), std::string::npos);
 }
