@@ -139,7 +139,7 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
   }
 
   // Knots in the block (Mokume Sec. 5.2.4): two knots from the pith through the block, merged by the
-  // smooth minimum and darkened, on faces and a cut.
+  // smooth minimum and darkened, on faces and a cut; the second tapers (issue 19 item 2).
   void blockKnots() {
     Project project = demoProject();
     const WoodParameters& p = project.params;
@@ -151,6 +151,7 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
       knot.origin = onPith;
       knot.direction = glm::normalize(target - onPith + glm::vec3(0, 0.2f * glm::length(target - onPith), 0));
       knot.speed = 0.14f;
+      if (!project.knots.empty()) knot.taper = 0.4f, knot.taperAge = 12.0f;
       project.knots.push_back(knot);
     }
     const WoodModel model(project);
