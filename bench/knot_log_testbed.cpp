@@ -91,6 +91,9 @@ void printBlockLine(const BedBlockResult& b) {
     std::printf(" knot %d speed %.3f (initial %.3f), taper %.3f at %.1f years, k_stem %.2f, moved %.2f deg;",
                 e.id, e.fitted.speed, e.initial.speed, e.fitted.taper, e.fitted.taperAge, r.knotSmoothStem,
                 e.axisMovedDeg);
+  if (r.knotColour.fitted)
+    std::printf(" knots.darkening fitted %.3f, %.3f, %.3f;", r.knotColour.darkening.x,
+                r.knotColour.darkening.y, r.knotColour.darkening.z);
   for (const KnotOutline& o : r.knotOutlines)
     std::printf(" knot %d's edge on %c: %s;", o.knot, faceLetter(o.face), o.note.c_str());
   for (const BedKnotResult& k : b.knots)

@@ -1,5 +1,7 @@
 #include "fit/growth_field_fit.hpp"
 
+#include "fit/knot_colour_fit.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
@@ -395,6 +397,11 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     report.colourL1Before = colours.l1Before;
     report.colourL1After = colours.l1After;
     report.colourSeconds = colours.seconds;
+    // The knots' colour from their outlines (issue 19 item 4): the knot darker by what the photos show.
+    if (!out.knots.empty() && !report.knotOutlines.empty()) {
+      report.knotColour = fitKnotDarkening(input.photos, block, report.knotOutlines);
+      if (report.knotColour.fitted) out.params.knotDarkening = report.knotColour.darkening;
+    }
   }
   if (options.preview) options.preview(out.params, out.rates);
 
@@ -581,6 +588,13 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
         format("knots: the pith refined together with them on the undeformed field (moved %.2f deg, "
                "%.2f mm); distortions fitted to the %d contours away from them",
                r.knotPithMovedDeg, r.knotPithMovedMm, r.contoursAwayFromKnots));
+  if (r.knotColour.fitted)
+    lines.push_back(format(
+        "knots: darkening (Larsson Sec. 4.3) fitted from %d outline(s): %.3f, %.3f, %.3f "
+        "(the wood around them %.3f, %.3f, %.3f minus the knots %.3f, %.3f, %.3f)",
+        r.knotColour.outlines, r.knotColour.darkening.x, r.knotColour.darkening.y, r.knotColour.darkening.z,
+        r.knotColour.woodColour.x, r.knotColour.woodColour.y, r.knotColour.woodColour.z,
+        r.knotColour.knotColour.x, r.knotColour.knotColour.y, r.knotColour.knotColour.z));
   if (r.knotSmoothnessFitted)
     lines.push_back(format("knots: k_stem (Eq. 7's smoothness s) fitted to %.3f, %d iterations, %.3f s",
                            r.knotSmoothStem, r.knotIterations, r.knotSeconds));

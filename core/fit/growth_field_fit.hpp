@@ -16,6 +16,7 @@
 #include "fit/anatomy_prior.hpp"
 #include "fit/block_knot_fit.hpp"
 #include "fit/iso_contours.hpp"
+#include "fit/knot_colour_fit.hpp"
 #include "fit/pith_fit.hpp"
 #include "geometry/block.hpp"
 #include "geometry/face_set.hpp"
@@ -114,6 +115,7 @@ struct GrowthFieldFitReport {
   // Knots (Mokume Sec. 5.2.4): one entry per marked knot id; k_stem fitted when any knot was optimised.
   std::vector<BlockKnotFitEntry> knots;
   std::vector<KnotOutline> knotOutlines;  // one per knot mark, as found on its photo (issue 19 item 2)
+  KnotColourFit knotColour;               // knots.darkening from those outlines (with the colours)
   bool knotSmoothnessFitted = false;
   float knotSmoothStem = 0;
   int knotIterations = 0;

@@ -26,6 +26,8 @@
 #include "log_block_photos.hpp"
 #include "log_cut_blocks.hpp"
 #include "params/parameter_schema.hpp"
+#include "render/renderers.hpp"
+#include "render/wood_model.hpp"
 #include "rings/detect_block_rings.hpp"
 #include "util/resource_usage.hpp"
 
@@ -164,6 +166,15 @@ inline BedBlockResult runBedBlock(const LogModel& measured, const BedBlockSpec& 
   const Stopwatch clock;
   const GrowthFieldFitResult fit = fitBedPhotos(photos, rings, block, marks, options.fit);
   out.fitSeconds = clock.seconds();
+  if (!options.saveDir.empty()) {  // the fitted block's faces beside the photos, to look at
+    const WoodModel model(block, fit.params, *fit.rates, fit.knots);
+    const std::string stem = spec.name + (withDeath ? "" : "_no_death") + "_";
+    for (FaceId f : kAllFaces) {
+      const Image& photo = photos[faceIndex(f)];
+      writeImage(options.saveDir / (stem + std::string(1, faceLetter(f)) + "_fitted.png"),
+                 renderFace(model, f, {photo.width, photo.height}, 2));
+    }
+  }
   out.report = fit.report;
   pithError(log, out.board, fit.params, out.pithDeg, out.pithMm);
   std::optional<GrowthFieldFitResult> plain;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <random>
 
+#include "fit/knot_colour_fit.hpp"
 #include "rings/knot_outline.hpp"
 
 using namespace kerf;
@@ -121,4 +122,31 @@ TEST(KnotOutline, AKnotAtTheFacesEdgeIsMeasuredFromWhatShowsOrRefusedWithTheReas
   const KnotOutline off = detectKnotOutline(most, block, KnotMark{1, FaceId::A, {-3.0f, 25.0f}});
   EXPECT_FALSE(off.found);
   EXPECT_EQ(off.note, "the mark lies off the photo");
+}
+
+// Issue 19 item 4: knots.darkening from the outlines (fit/knot_colour_fit.hpp). The synthetic knot's wood
+// is 0.52-0.58 grey (median of its bands about 0.55) in stem wood of 0.80 with darker ring lines: the
+// darkening is the wood's colour minus the knot's, about 0.25 in every channel.
+TEST(KnotColourFit, TheDarkeningIsTheWoodAroundMinusTheKnotInside) {
+  const Block block(glm::vec3(50.0f));
+  std::array<Image, 6> photos;
+  photos[faceIndex(FaceId::A)] = knottyFace(block, Ellipse{{22.0f, 27.0f}, {6.0f, 4.0f}, 0.5f});
+  const KnotOutline o =
+      detectKnotOutline(photos[faceIndex(FaceId::A)], block, KnotMark{0, FaceId::A, {22.0f, 27.0f}});
+  ASSERT_TRUE(o.found) << o.note;
+  const KnotColourFit fit = fitKnotDarkening(photos, block, {o});
+  ASSERT_TRUE(fit.fitted) << fit.note;
+  EXPECT_EQ(fit.outlines, 1);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(fit.darkening[c], 0.25f, 0.04f) << c;
+    EXPECT_FLOAT_EQ(fit.darkening[c], fit.woodColour[c] - fit.knotColour[c]);
+  }
+  EXPECT_NEAR(fit.woodColour.x - fit.woodColour.z, 0.13f, 0.02f);  // the wood's own tint is kept out
+
+  // No outline found: nothing fitted, and why.
+  KnotOutline none = o;
+  none.found = false;
+  const KnotColourFit nothing = fitKnotDarkening(photos, block, {none});
+  EXPECT_FALSE(nothing.fitted);
+  EXPECT_EQ(nothing.note, "no knot outline was found on the photos");
 }
