@@ -41,7 +41,8 @@ KnotColourFit fitKnotDarkening(const std::array<Image, 6>& photos, const Block& 
     const glm::vec2 lo = faceMmToImage(block, o.face, o.center - glm::vec2(reach), size);
     const glm::vec2 hi = faceMmToImage(block, o.face, o.center + glm::vec2(reach), size);
     for (int y = std::max(0, static_cast<int>(lo.y)); y < std::min(size.y, static_cast<int>(hi.y) + 1); ++y)
-      for (int x = std::max(0, static_cast<int>(lo.x)); x < std::min(size.x, static_cast<int>(hi.x) + 1); ++x) {
+      for (int x = std::max(0, static_cast<int>(lo.x)); x < std::min(size.x, static_cast<int>(hi.x) + 1);
+           ++x) {
         const float q = radiusRatio(o, imageToFaceMm(block, o.face, {x + 0.5f, y + 0.5f}, size));
         auto* into = q < 0.6f ? &inside : (q > 1.3f && q < 2.0f) ? &around : nullptr;
         if (!into) continue;

@@ -18,11 +18,11 @@ namespace kerf {
 
 struct KnotColourFit {
   bool fitted = false;
-  glm::vec3 darkening{0.0f};     // knots.darkening (RGB, the photos' colour units)
-  glm::vec3 knotColour{0.0f};    // the medians it came from: inside the outlines
-  glm::vec3 woodColour{0.0f};    // and around them
-  int outlines = 0;              // outlines used
-  std::string note;              // why none was fitted
+  glm::vec3 darkening{0.0f};   // knots.darkening (RGB, the photos' colour units)
+  glm::vec3 knotColour{0.0f};  // the medians it came from: inside the outlines
+  glm::vec3 woodColour{0.0f};  // and around them
+  int outlines = 0;            // outlines used
+  std::string note;            // why none was fitted
 };
 
 KnotColourFit fitKnotDarkening(const std::array<Image, 6>& photos, const Block& block,
