@@ -56,6 +56,10 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
   command->add_flag("--release-knot-marks", o.releaseKnotMarks,
                     "Let the rings place the knots: the knot marks only tell where to start (kept in the "
                     "project)");
+  command->add_flag("--ignore-knot-edges", o.ignoreKnotEdges,
+                    "Size the knots by the ring contours alone, not by the knot's edge found around each "
+                    "mark on its photo (the report gives each outline's size; use this when one is wrong, "
+                    "e.g. a resin streak as dark as the knot beside it)");
   addHoldOutFaceOption(command, o.holdOut);
   cli::addNumber(command, "--uncertainty", o.uncertaintyRefits,
                  "Also say how sure the fit is inside the block: refit the field N times on resampled ring "
@@ -188,6 +192,7 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   options.minFaces = kMinFitFaces;
   options.plausiblePithDistanceMm = o.maxPithDistance;
   options.pithSideByPores = !o.ignorePores;
+  options.useKnotOutlines = !o.ignoreKnotEdges;
   const GrowthFieldFitResult fit = [&] {
     try {
       return fitGrowthFieldToSample(input, project.block, project.params, options, context.progress());

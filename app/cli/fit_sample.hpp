@@ -29,6 +29,7 @@ struct FitSampleOptions {
   int uncertaintyRefits = 0;  // > 0: how sure the fit is (fit/ring_uncertainty_fit.hpp), kept in the project
   double knotMarkAccuracy = 0;    // > 0: every knot mark's accuracy (mm), kept in the project
   bool releaseKnotMarks = false;  // knot marks only seed their knots (kept in the project)
+  bool ignoreKnotEdges = false;   // !GrowthFieldFitOptions::useKnotOutlines
 };
 
 // The options of the fit besides SAMPLE and --out, on `fit` and `reconstruct` alike.

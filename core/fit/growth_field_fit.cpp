@@ -228,6 +228,7 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   // Issue 19 item 2: each marked knot's edge on its photo, which holds the knot's size in both knot stages.
   if (options.fitKnots && options.useKnotOutlines && !input.knotMarks.empty())
     report.knotOutlines = detectKnotOutlines(input.photos, block, input.knotMarks);
+  report.knotOutlinesIgnored = options.fitKnots && !options.useKnotOutlines && !input.knotMarks.empty();
   PithFitOptions pithOptions;
   pithOptions.principal = options.principal;
   if (report.anatomy && options.useAnatomy && options.anatomyWeight > 0) {
@@ -588,6 +589,10 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
         format("knots: the pith refined together with them on the undeformed field (moved %.2f deg, "
                "%.2f mm); distortions fitted to the %d contours away from them",
                r.knotPithMovedDeg, r.knotPithMovedMm, r.contoursAwayFromKnots));
+  if (r.knotOutlinesIgnored)
+    lines.push_back(
+        "knots: sized by the ring contours alone (their edges on the photos ignored, as asked); such knots "
+        "come out too thin (docs/knots.md)");
   if (r.knotColour.fitted)
     lines.push_back(format(
         "knots: darkening (Larsson Sec. 4.3) fitted from %d outline(s): %.3f, %.3f, %.3f "

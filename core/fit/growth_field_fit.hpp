@@ -116,6 +116,7 @@ struct GrowthFieldFitReport {
   std::vector<BlockKnotFitEntry> knots;
   std::vector<KnotOutline> knotOutlines;  // one per knot mark, as found on its photo (issue 19 item 2)
   KnotColourFit knotColour;               // knots.darkening from those outlines (with the colours)
+  bool knotOutlinesIgnored = false;       // marks, but GrowthFieldFitOptions::useKnotOutlines was off
   bool knotSmoothnessFitted = false;
   float knotSmoothStem = 0;
   int knotIterations = 0;
