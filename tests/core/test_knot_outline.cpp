@@ -148,5 +148,5 @@ TEST(KnotColourFit, TheDarkeningIsTheWoodAroundMinusTheKnotInside) {
   none.found = false;
   const KnotColourFit nothing = fitKnotDarkening(photos, block, {none});
   EXPECT_FALSE(nothing.fitted);
-  EXPECT_EQ(nothing.note, "no knot outline was found on the photos");
+  EXPECT_EQ(nothing.note, "no knot outline was found on a colour photo");
 }
