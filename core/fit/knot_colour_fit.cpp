@@ -51,7 +51,8 @@ KnotColourFit fitKnotDarkening(const std::array<Image, 6>& photos, const Block& 
       }
   }
   if (inside[0].empty() || around[0].empty()) {
-    out.note = out.outlines == 0 ? "no knot outline was found on a colour photo" : "the outlines hold no pixels";
+    out.note =
+        out.outlines == 0 ? "no knot outline was found on a colour photo" : "the outlines hold no pixels";
     return out;
   }
   const ParamSpec& spec = *findParameter("knots.darkening");
