@@ -23,6 +23,12 @@ packages=(
   xvfb xauth libgl1-mesa-dri libglx-mesa0 mesa-utils fonts-dejavu-core
 )
 
+# --training: also what scripts/train_ring_detector.py needs (PyTorch from Debian). Not needed to build,
+# test or run Kerf: the trained network ships in resources/models.
+if [ "${1:-}" = "--training" ]; then
+  packages+=(python3-torch python3-opencv python3-numpy)
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "command.hpp"
+#include "detector_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
 #include "rings/detect_block_rings.hpp"
+#include "rings/learned_ring_detector.hpp"
 #include "util/error.hpp"
 
 namespace fs = std::filesystem;
@@ -24,12 +26,14 @@ Command addDetectCommand(CLI::App& app) {
   struct Options {
     std::string document, out;
     bool allowMissing = false;
+    std::string detector = "classical";
   };
   auto o = std::make_shared<Options>();
   detect->add_option("SAMPLE", o->document, "A Mokume-style sample folder (A_col.png ..) or a .kerf project")
       ->required();
   detect->add_option("--out", o->out, "Output folder (created if needed)")->required();
   detect->add_flag("--allow-missing", o->allowMissing, "Skip faces without a photo instead of failing");
+  addDetectorOption(detect, o->detector);
   return {
       detect, [o](Context& context) {
         const Project project = loadDocument(o->document);
@@ -71,7 +75,7 @@ Command addDetectCommand(CLI::App& app) {
           }
         } removeStaging{staging};
         std::vector<std::string> written;
-        const ClassicalRingDetector detector;
+        const RingDetector& detector = ringDetectorNamed(o->detector);
         const BlockRingDetection detection =
             detectBlockRings(photos, project.block, project.heldOutFaces, context.progress(), detector);
         nlohmann::json facesJson = nlohmann::json::object();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "detector_option.hpp"
 #include "fit/growth_field_fit.hpp"
 #include "fit/held_out_faces.hpp"
 #include "fit/ring_uncertainty_fit.hpp"
@@ -14,6 +15,7 @@
 #include "number_option.hpp"
 #include "params/builtin_presets.hpp"
 #include "rings/detect_block_rings.hpp"
+#include "rings/learned_ring_detector.hpp"
 #include "util/error.hpp"
 
 namespace kerf::cli {
@@ -60,6 +62,7 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
                     "Size the knots by the ring contours alone, not by the knot's edge found around each "
                     "mark on its photo (the report gives each outline's size; use this when one is wrong, "
                     "e.g. a resin streak as dark as the knot beside it)");
+  addDetectorOption(command, o.detector);
   addHoldOutFaceOption(command, o.holdOut);
   cli::addNumber(command, "--uncertainty", o.uncertaintyRefits,
                  "Also say how sure the fit is inside the block: refit the field N times on resampled ring "
@@ -174,7 +177,7 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   if (std::any_of(toDetect.begin(), toDetect.end(), [](const Image& photo) { return !photo.empty(); })) {
     std::fflush(stdout);  // the lines above before the progress on stderr
     const BlockRingDetection detection =
-        detectBlockRings(toDetect, project.block, heldOut, context.progress());
+        detectBlockRings(toDetect, project.block, heldOut, context.progress(), ringDetectorNamed(o.detector));
     for (int i = 0; i < 6; ++i)
       if (detection.faces[i]) input.rings[i] = toGray8(detection.faces[i]->arl);
     fitted.facesDetected = detection.faceCount();

@@ -30,6 +30,8 @@ struct FitSampleOptions {
   double knotMarkAccuracy = 0;    // > 0: every knot mark's accuracy (mm), kept in the project
   bool releaseKnotMarks = false;  // knot marks only seed their knots (kept in the project)
   bool ignoreKnotEdges = false;   // !GrowthFieldFitOptions::useKnotOutlines
+  std::string detector =
+      "classical";  // rings/learned_ring_detector.hpp ringDetectorNamed, for photos without ring maps
 };
 
 // The options of the fit besides SAMPLE and --out, on `fit` and `reconstruct` alike.

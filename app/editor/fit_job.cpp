@@ -7,6 +7,7 @@
 #include "fit/ring_uncertainty_fit.hpp"
 #include "qt_image.hpp"
 #include "rings/detect_block_rings.hpp"
+#include "rings/learned_ring_detector.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -19,15 +20,17 @@ int RingDetection::contourCount() const {
   return n;
 }
 
-RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& block, const Progress& progress) {
+RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& block,
+                          const std::string& detector, const Progress& progress) {
   if (std::all_of(photos.begin(), photos.end(), [](const QImage& photo) { return photo.isNull(); }))
     throw InputError(
         "there are no face photos to detect rings on; open a sample folder or drop photos on the faces");
   std::array<Image, 6> images;
   for (int i = 0; i < 6; ++i)
     if (!photos[i].isNull()) images[i] = fromQImage(photos[i]);
-  const BlockRingDetection found = detectBlockRings(images, block, {}, progress);
+  const BlockRingDetection found = detectBlockRings(images, block, {}, progress, ringDetectorNamed(detector));
   RingDetection detection;
+  detection.detector = detector;
   for (int i = 0; i < 6; ++i) {
     if (!found.faces[i]) continue;
     for (const FaceContour& contour : found.faces[i]->contours)

@@ -1,7 +1,7 @@
 #pragma once
 // The editor's ring work, run off the GUI thread as JobRunner jobs: ring detection on the face photos
-// (ClassicalRingDetector, as `kerf-cli detect`) and the growth-field fit on ring-localization images
-// (pith axis, ring width and phase, then the growth rates: fitGrowthFieldToSample, the pipeline of
+// (the learned or the classical detector, as `kerf-cli detect`) and the growth-field fit on ring-localization
+// images (pith axis, ring width and phase, then the growth rates: fitGrowthFieldToSample, the pipeline of
 // `kerf-cli fit`, fit/growth_field_fit.hpp). Self-contained functions of values: no QObject, no shared state.
 #include <QImage>
 #include <QPolygonF>
@@ -14,6 +14,7 @@
 #include <glm/vec2.hpp>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "field/block_knots.hpp"
@@ -37,14 +38,19 @@ struct RingDetection {
   std::array<std::vector<std::vector<glm::ivec2>>, 6> contours;
   std::array<double, 6> seconds{};
   int facesDetected = 0;
+  std::string detector;  // which detector found them ("learned", "classical")
   int contourCount() const;
   bool empty() const { return facesDetected == 0; }
 };
 
-// Runs ClassicalRingDetector on every face photo (A..F; null photos are skipped), at the resolution given
-// by the block (photo width / face width). Throws InputError without any photo, Cancelled on request.
+// The ring detector the editor uses unless the user picks the other (Rings ▸ Learned Ring Detector).
+inline constexpr const char* kDefaultEditorRingDetector = "classical";
+
+// Runs the named ring detector ("learned" or "classical", rings/learned_ring_detector.hpp) on every face
+// photo (A..F; null photos are skipped), at the resolution given by the block (photo width / face width).
+// Throws InputError without any photo, Cancelled on request.
 RingDetection detectRings(const std::array<QImage, 6>& photos, const Block& block,
-                          const Progress& progress = {});
+                          const std::string& detector, const Progress& progress = {});
 
 // The detected contours as ring traces of the document (face mm; origin Detected), for
 // replaceDetectedTraces: what Detect Rings adds and Fit Growth Field then fits.

@@ -204,6 +204,7 @@ class MainWindow : public QMainWindow {
   QAction* showPhotosOn3dAction_ = nullptr;
   QAction* importPhotosAction_ = nullptr;
   QAction* detectRingsAction_ = nullptr;
+  QAction* learnedDetectorAction_ = nullptr;  // Rings ▸ Learned Ring Detector (checked: the network)
   QAction* fitGrowthAction_ = nullptr;
   QAction* otherPithAction_ = nullptr;
   QAction* showResidualsAction_ = nullptr;

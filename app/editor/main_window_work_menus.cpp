@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
 
 #include "annotation_layer.hpp"
 #include "faces_view.hpp"
@@ -16,10 +17,24 @@ void MainWindow::createRingsMenu() {
   rings->setToolTipsVisible(true);
   detectRingsAction_ = rings->addAction(tr("&Detect Rings"), rings_, &RingsController::detectRings);
   detectRingsAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
-  detectRingsAction_->setToolTip(
-      tr("Find the annual rings on every face photo (classical detector) and add them as ring traces you can "
-         "correct (they replace the previously detected ones; your own traces stay); runs in the background "
-         "(Esc cancels)"));
+  detectRingsAction_->setToolTip(tr(
+      "Find the annual rings on every face photo and add them as ring traces you can correct (they "
+      "replace the previously detected ones; your own traces stay); runs in the background (Esc cancels)"));
+  learnedDetectorAction_ = rings->addAction(tr("&Learned Ring Detector"));
+  learnedDetectorAction_->setObjectName("learnedDetectorAction");
+  learnedDetectorAction_->setCheckable(true);
+  learnedDetectorAction_->setToolTip(tr(
+      "Detect Rings and Reconstruct use Kerf's network, trained on wood Kerf rendered itself: it tells the "
+      "ring boundary (latewood meeting next year's earlywood) from the other, softer edge of the latewood "
+      "band. Off: the classical filter detector. Remembered between sessions"));
+  const bool learned =
+      QSettings().value("rings/detector", QString(kDefaultEditorRingDetector)).toString() == "learned";
+  learnedDetectorAction_->setChecked(learned);
+  rings_->setDetector(learned ? "learned" : "classical");
+  connect(learnedDetectorAction_, &QAction::toggled, this, [this](bool on) {
+    rings_->setDetector(on ? "learned" : "classical");
+    QSettings().setValue("rings/detector", on ? "learned" : "classical");
+  });
   fitGrowthAction_ = rings->addAction(tr("&Fit Growth Field"), rings_, &RingsController::fitGrowthField);
   fitGrowthAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
   fitGrowthAction_->setToolTip(

@@ -67,7 +67,7 @@ void reconstructFromPhotos(const ReconstructInput& input, const Progress& progre
   if (!rings) {
     start(ReconstructStage::Rings);
     rings = std::make_shared<const RingDetection>(
-        detectRings(photos, input.block, progress.part(0.0, kRingsEnd)));
+        detectRings(photos, input.block, input.detector, progress.part(0.0, kRingsEnd)));
     ReconstructEvent event;
     event.stage = ReconstructStage::Rings;
     event.rings = rings;

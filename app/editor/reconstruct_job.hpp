@@ -26,6 +26,7 @@ struct ReconstructInput {
   FaceSet heldOut;          // nothing of these faces' photos is used
   Annotations annotations;  // the user's own traces are kept and fitted with the detected ones; knot marks
   TextureInferenceOptions appearance;
+  std::string detector = kDefaultEditorRingDetector;  // the ring detector (fit_job.hpp detectRings)
   bool inferAppearance = true;  // false: the procedural wood of the fit (its colours) is the appearance
   // Re-running after a correction (issue 20 item 2): what is still current is reused, not redone.
   // rings: the ring images of the current photos; detection is skipped and the document's traces, the

@@ -100,9 +100,9 @@ void RingsController::detectRings() {
   const Block block = document_->project().block;
   ringJob_ = jobs_->start(
       tr("Detecting rings"),
-      [photos, block](const Progress& progress, const JobRunner::Preview&) -> QVariant {
+      [photos, block, detector = detector_](const Progress& progress, const JobRunner::Preview&) -> QVariant {
         return QVariant::fromValue(
-            std::make_shared<const RingDetection>(kerf::detectRings(photos, block, progress)));
+            std::make_shared<const RingDetection>(kerf::detectRings(photos, block, detector, progress)));
       },
       [this](const QVariant& result) {
         ringJob_ = 0;

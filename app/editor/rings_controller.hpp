@@ -8,6 +8,7 @@
 // (rings_traces.cpp).
 #include <QString>
 #include <memory>
+#include <string>
 
 #include "editor_controller.hpp"
 #include "fit_job.hpp"
@@ -38,6 +39,9 @@ class RingsController : public EditorController {
   void setActions(const Actions& actions);
 
   void detectRings();
+  // Which ring detector Detect Rings and Reconstruct use: "learned" or "classical" (fit_job.hpp).
+  void setDetector(const std::string& name) { detector_ = name; }
+  const std::string& detector() const { return detector_; }
   void fitGrowthField();
   // After an ambiguous fit (Mokume B.1): swaps the field for the one around the other pith candidate.
   void useOtherPithCandidate();
@@ -98,6 +102,7 @@ class RingsController : public EditorController {
   int ringJob_ = 0, fitJob_ = 0, uncertaintyJob_ = 0, knotRefitJob_ = 0;
   QTimer* knotRefitTimer_ = nullptr;  // a refit starts when the marks have been still a moment
   std::shared_ptr<const RingDetection> ringDetection_;
+  std::string detector_ = kDefaultEditorRingDetector;
   std::shared_ptr<const GrowthFitResult> lastFit_;  // for the other pith candidate
 };
 

@@ -242,6 +242,7 @@ void WorkPath::reconstruct() {
   input.annotations = project.annotations;
   input.appearance = window_->texture()->textureOptions();
   input.inferAppearance = inferAppearance_;
+  input.detector = window_->rings()->detector();
   // After a correction only what depends on it runs again; with nothing changed, all of it (the user asked).
   ReconstructPlan plan = planReconstruct(currentState(), inferAppearance_);
   if (plan.nothing()) {

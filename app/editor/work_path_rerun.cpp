@@ -36,7 +36,9 @@ ReconstructState WorkPath::currentState() const {
   ReconstructState state;
   const Document& document = *window_->document();
   const auto rings = window_->rings()->ringDetection();
-  state.ringsCurrent = rings && detectionMatches(*rings, document);
+  // A detection by the other detector than the one now chosen is redone.
+  state.ringsCurrent =
+      rings && detectionMatches(*rings, document) && rings->detector == window_->rings()->detector();
   const auto fit = window_->rings()->lastFit();
   const std::uint64_t field = documentField(document.project());
   state.fieldCurrent = fit && !annotationsChangedSinceFit_ && document.project().rates &&

@@ -143,7 +143,7 @@ class DocumentTest : public QObject {
 
   void ringJobsSayWhatIsMissing() {
     const Block block = document_.project().block;
-    QVERIFY_THROWS_EXCEPTION(InputError, detectRings({}, block));  // no photos
+    QVERIFY_THROWS_EXCEPTION(InputError, detectRings({}, block, "classical"));  // no photos
     QVERIFY_THROWS_EXCEPTION(InputError,
                              fitGrowthField({}, block, document_.project().params));  // no contours
   }
