@@ -12,7 +12,7 @@ sanding scratches, uneven light.
 
 Usage (Debian packages python3-torch python3-opencv python3-numpy: scripts/install-deps.sh --training):
   build/test/bench/kerf_ring_training_data DATA 400 1000
-  python3 scripts/train_ring_detector.py DATA resources/models/ring_detector.onnx [--minutes 20]
+  python3 scripts/train_ring_detector.py DATA [DATA2 ..] resources/models/ring_detector.onnx [--minutes 20]
 
 The network's input is the photo resampled to 6.4 px/mm (Mokume's 256 px per 40 mm), RGB in 0..1, each
 channel minus its mean over the image, all divided by the image's standard deviation (the same in
@@ -167,7 +167,7 @@ def batch(photos, arls, indices, rng):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("data")
+    ap.add_argument("data", nargs="+", help="folders written by kerf_ring_training_data")
     ap.add_argument("out")
     ap.add_argument("--minutes", type=float, default=20)
     ap.add_argument("--batch", type=int, default=16)
@@ -180,12 +180,17 @@ def main():
     torch.manual_seed(args.seed)
     torch.set_num_threads(args.threads)
     rng = np.random.default_rng(args.seed)
-    stems, photos, arls = load(args.data)
-    # Whole blocks held out for validation (the stem's first 5 characters are the block's seed).
-    blocks = sorted({s[:5] for s in stems})
+    stems, photos, arls = [], [], []
+    for k, folder in enumerate(args.data):
+        s, p, a = load(folder)
+        stems += [f"{k}:{stem}" for stem in s]  # block ids stay apart between folders
+        photos += p
+        arls += a
+    # Whole blocks held out for validation (the stem before '_' names the block).
+    blocks = sorted({s.split('_')[0] for s in stems})
     held = set(blocks[:: 10])
-    train = [i for i, s in enumerate(stems) if s[:5] not in held]
-    val = [i for i, s in enumerate(stems) if s[:5] in held]
+    train = [i for i, s in enumerate(stems) if s.split('_')[0] not in held]
+    val = [i for i, s in enumerate(stems) if s.split('_')[0] in held]
     print(f"{len(stems)} faces of {len(blocks)} blocks: {len(train)} to train on, {len(val)} to validate "
           f"({len(held)} blocks)", flush=True)
     vrng = np.random.default_rng(12345)

@@ -70,7 +70,7 @@ cv::Mat ringBoundaries(const cv::Mat& probability, const LearnedRingParams& P, f
   for (int y = 0; y < ridge.rows; ++y)
     for (int x = 0; x < ridge.cols; ++x) {
       const int l = labels.at<int>(y, x);
-      if (l > 0) peak[l] = std::max(peak[l], smooth.at<float>(y, x));
+      if (l > 0) peak[l] = std::max(peak[l], probability.at<float>(y, x));
     }
   const int minLength = std::max(3, static_cast<int>(std::lround(P.minLengthMm * pxPerMm)));
   cv::Mat boundary(ridge.rows, ridge.cols, CV_8U, cv::Scalar(0));
@@ -81,37 +81,6 @@ cv::Mat ringBoundaries(const cv::Mat& probability, const LearnedRingParams& P, f
         boundary.at<unsigned char>(y, x) = 1;
     }
   return boundary;
-}
-
-// The classical detector's ring boundaries with the polarity chosen by the network: the filters give
-// smooth, well-placed curves along both edges of every latewood band but can only guess, per face, which
-// edge is the ring boundary (a near tie on ring-porous end grain); the network has learned it. Of the two
-// signs, the one whose curves the network finds more ring-like (mean probability along them) is kept.
-cv::Mat boundariesWithNetworkPolarity(const Image& photo, const cv::Mat& probability,
-                                      const LearnedRingParams& P, float pxPerMm) {
-  cv::Mat smooth = probability;
-  if (P.smoothMm * pxPerMm > 0.3f)
-    cv::GaussianBlur(probability, smooth, cv::Size(0, 0), P.smoothMm * pxPerMm, 0, cv::BORDER_REFLECT);
-  cv::Mat best;
-  double bestScore = -1;
-  for (const auto polarity :
-       {ClassicalRingParams::Polarity::Rising, ClassicalRingParams::Polarity::Falling}) {
-    ClassicalRingParams classical;
-    classical.polarity = polarity;
-    const ClassicalRingResult found = ClassicalRingDetector(classical).detect(photo, pxPerMm);
-    cv::Mat curves(photo.height, photo.width, CV_8U);
-    double sum = 0;
-    long n = 0;
-    for (int y = 0; y < photo.height; ++y)
-      for (int x = 0; x < photo.width; ++x) {
-        const bool on = found.boundaries.pixel(x, y)[0] > 0.5f;
-        curves.at<unsigned char>(y, x) = on ? 1 : 0;
-        if (on) sum += smooth.at<float>(y, x), ++n;
-      }
-    const double score = n > 0 ? sum / double(n) : 0.0;
-    if (score > bestScore) bestScore = score, best = curves;
-  }
-  return best;
 }
 
 // Mokume Eq. 1's profile of the distance to the nearest boundary over the ring width, the width measured
@@ -193,10 +162,7 @@ Image LearnedRingDetector::localize(const Image& photo, float pxPerMm, const Pro
     progress.set(1.0);
     return probability;
   }
-  const cv::Mat boundary = params_.chooseClassicalCurves
-                               ? boundariesWithNetworkPolarity(photo, full, params_, pxPerMm)
-                               : ringBoundaries(full, params_, pxPerMm);
-  Image arl = ringLocalizationFromBoundaries(boundary, params_, pxPerMm);
+  Image arl = ringLocalizationFromBoundaries(ringBoundaries(full, params_, pxPerMm), params_, pxPerMm);
   progress.set(1.0);
   return arl;
 }

@@ -29,10 +29,6 @@ struct LearnedRingParams {
   // is minLengthMm long; then Eq. 1's profile over the measured ring width, as the classical detector.
   float lowThreshold = 0.25f, highThreshold = 0.5f;
   float minLengthMm = 5.0f;
-  // true: the classical detector's curves, both edges of each band, kept where the network's mean
-  // probability along the curve reaches curveThreshold; false: the ridges of the probability itself.
-  bool chooseClassicalCurves = true;
-  float curveThreshold = 0.3f;
   float smoothMm = 0.3f;  // Gaussian smoothing of the probability first (its pores and pits)
   float minRingWidthMm = 0.6f, maxRingWidthMm = 15.0f;
   float power = 10.0f;
