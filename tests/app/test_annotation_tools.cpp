@@ -380,6 +380,24 @@ void TestAnnotationTools::detectedRingsBecomeTracesInOneStep() {
   QCOMPARE(annotations(), drawn);
   undo()->redo();
   QCOMPARE(static_cast<int>(annotations().traces.size()), detectedCount + 1);
+
+  // With Rings > Learned Ring Detector checked, the network finds them: again one step, the drawn trace kept.
+  auto* learned = window_->findChild<QAction*>("learnedDetectorAction");
+  QVERIFY(learned && learned->isCheckable() && !learned->isChecked());  // the classical one by default
+  learned->setChecked(true);
+  QCOMPARE(window_->rings()->detector(), std::string("learned"));
+  const int before = undo()->index();
+  window_->detectRingsAction()->trigger();
+  QTRY_VERIFY_WITH_TIMEOUT(detected.count() + failed.count() > 2, kTimeoutMs);
+  QVERIFY2(failed.isEmpty(), qPrintable(window_->lastError()));
+  QCOMPARE(window_->rings()->ringDetection()->detector, std::string("learned"));
+  int byNetwork = 0;
+  for (const RingTrace& t : annotations().traces) byNetwork += t.origin == TraceOrigin::Detected;
+  QVERIFY2(byNetwork >= 6, qPrintable(QString::number(byNetwork)));
+  QCOMPARE(annotations().traces[0], drawn.traces[0]);
+  undo()->setIndex(before);  // the classical detection back, for the tests that follow
+  learned->setChecked(false);
+  QCOMPARE(window_->rings()->detector(), std::string("classical"));
 }
 
 void TestAnnotationTools::savesAndReopensTheAnnotations() {
