@@ -114,7 +114,7 @@ void main() {
   vec3 albedo, fiber;
   float gloss = 1.0;
   bool withFiber = true;
-  if (u_showPhoto && u_pass == 0) {
+  if (u_showPhoto && u_pass <= 1) {  // a photo, or the face's or cut's own appearance (issue 17)
     albedo = texture(u_photo, v_photoUv).rgb;
     fiber = u_axisDirection;
     withFiber = false;

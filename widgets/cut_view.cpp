@@ -164,6 +164,36 @@ void CutView::setCutPlane(const CutPlaneSetting& setting) {
   update();
 }
 
+void CutView::setCutAppearance(const CutAppearance& cut) {
+  appearance_ = cut;
+  update();
+}
+
+bool CutView::showsCutAppearance() const {
+  return model_ && appearance_.model == model_ && !boardWood_ && appearance_.plane == setting_ &&
+         !appearance_.surface.image.isNull() && bounds();
+}
+
+// The picture mapped onto the cut: its pixel (x, y) centre lies at grid.point(x, y) in the block, which
+// the plane's frame and the zoom put on the widget (an affine map, so one QTransform).
+void CutView::drawCutAppearance(QPainter& painter) const {
+  const SurfaceGrid& grid = appearance_.surface.grid;
+  const auto widgetOf = [&](float x, float y) {
+    return widgetPointOf(plane_->toPlane(grid.point(x - 0.5f, y - 0.5f)));  // image coordinates: pixel edges
+  };
+  const QPointF o = widgetOf(0, 0), ex = widgetOf(1, 0) - o, ey = widgetOf(0, 1) - o;
+  painter.save();
+  painter.setClipPath([&] {
+    QPainterPath path;
+    path.addPolygon(cutOutline());
+    return path;
+  }());
+  painter.setTransform(QTransform(ex.x(), ex.y(), ey.x(), ey.y(), o.x(), o.y()));
+  painter.setRenderHint(QPainter::SmoothPixmapTransform);  // bilinear, as the 3D view's textures
+  painter.drawImage(QPointF(0, 0), appearance_.surface.image);
+  painter.restore();
+}
+
 std::optional<CutPlane> CutView::plane() const {
   if (!model_ || !plane_ || !plane_->boundsInBlock(model_->block())) return std::nullopt;
   return plane_;
@@ -463,7 +493,7 @@ void CutView::paintGL() {
   const QColor bg = backgroundColor();
   glClearColor(bg.redF(), bg.greenF(), bg.blueF(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  if (program_ && glError_.isEmpty() && bounds()) {
+  if (program_ && glError_.isEmpty() && bounds() && !showsCutAppearance()) {
     const int scale = chooseRenderScale();
     QElapsedTimer timer;
     timer.start();
@@ -587,6 +617,7 @@ void CutView::drawWood(int scale) {
 void CutView::drawOverlay() {
   QPainter painter(this);
   painter.setRenderHint(QPainter::Antialiasing);
+  if (showsCutAppearance()) drawCutAppearance(painter);
   const QPolygonF outline = cutOutline();
   if (!outline.isEmpty()) {
     painter.setPen(QPen(QColor(255, 255, 255, 150), 1.0));

@@ -41,6 +41,7 @@
 #include "geometry/cut_plane.hpp"
 #include "render/board_wood.hpp"
 #include "render/wood_model.hpp"
+#include "surface_image.hpp"
 
 class QAction;
 
@@ -69,6 +70,10 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   bool showsRingUncertainty() const;
   void setCutPlane(const CutPlaneSetting& setting);
   const CutPlaneSetting& cutPlane() const { return setting_; }
+  // The cut's own appearance (the photo-true cut, issue 17), drawn instead of the GLSL wood while the view
+  // shows its model and plane (surface_image.hpp); until then, and after an edit, the model's wood.
+  void setCutAppearance(const CutAppearance& cut);
+  bool showsCutAppearance() const;
   // The plane, when it passes through the block of the current model.
   std::optional<CutPlane> plane() const;
 
@@ -155,6 +160,7 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void drawWood(int scale);
   void drawOverlay();
   void drawRingUncertainty(class QPainter& painter, const QPolygonF& outline);
+  void drawCutAppearance(class QPainter& painter) const;
   void drawRulers(class QPainter& painter) const;
   void setPixelsPerMm(double pixelsPerMm, QPointF anchor);
   void updateCursorText(QPointF widgetPos);
@@ -163,6 +169,7 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   std::shared_ptr<const WoodModel> model_;
   std::shared_ptr<const RingUncertainty> ringUncertainty_;
   std::shared_ptr<const BoardWood> boardWood_;
+  CutAppearance appearance_;
   CutPlaneSetting setting_;
   std::optional<CutPlane> plane_;
 

@@ -77,6 +77,9 @@ void Viewport3D::releaseGl() {
   reducedFbo_.reset();
   fullFbo_.reset();
   for (auto& texture : photoTextures_) texture.reset();
+  for (auto& texture : faceAppearanceTextures_) texture.reset();
+  cutAppearanceTexture_.reset();
+  appearanceDirty_ = true;
   blockProgram_.reset();
   backgroundProgram_.reset();
   if (partRenderer_) partRenderer_->release();
@@ -153,6 +156,29 @@ void Viewport3D::setFacePhotos(const std::array<QImage, 6>& photos) {
   photos_ = photos;
   photosDirty_ = true;
   if (showPhotos_) sceneChanged(false);
+}
+
+void Viewport3D::setFaceAppearance(std::shared_ptr<const WoodModel> forModel,
+                                   const std::array<QImage, 6>& faces) {
+  faceAppearanceModel_ = std::move(forModel);
+  faceAppearance_ = faces;
+  appearanceDirty_ = true;
+  sceneChanged(false);
+}
+
+void Viewport3D::setCutAppearance(const CutAppearance& cut) {
+  cutAppearance_ = cut;
+  appearanceDirty_ = true;
+  if (cutEnabled_) sceneChanged(false);
+}
+
+bool Viewport3D::showsFaceAppearance() const {
+  return model_ && faceAppearanceModel_ == model_ && !boardWood_;
+}
+
+bool Viewport3D::showsCutAppearance() const {
+  return cutEnabled_ && model_ && cutAppearance_.model == model_ && !boardWood_ &&
+         cutAppearance_.plane == gizmo_.setting() && !cutAppearance_.surface.image.isNull();
 }
 
 void Viewport3D::setPart(std::shared_ptr<const Mesh> placedMesh) {
@@ -323,23 +349,40 @@ void Viewport3D::uploadGeometry() {
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void Viewport3D::uploadPhotos() {
+namespace {
+
+// An image as a face or cut texture (mipmapped; null for a null image), at most the GL's size.
+std::unique_ptr<QOpenGLTexture> surfaceTexture(QImage image, int maxSize) {
+  if (image.isNull()) return nullptr;
+  if (image.width() > maxSize || image.height() > maxSize)
+    image = image.scaled(maxSize, maxSize, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+  // QOpenGLTexture keeps the image's first row at t = 0, as blockToImage counts rows.
+  auto texture = std::make_unique<QOpenGLTexture>(image.convertToFormat(QImage::Format_RGBA8888),
+                                                  QOpenGLTexture::GenerateMipMaps);
+  texture->setMinMagFilters(QOpenGLTexture::LinearMipMapLinear, QOpenGLTexture::Linear);
+  texture->setWrapMode(QOpenGLTexture::ClampToEdge);
+  return texture;
+}
+
+int maxTextureSize(QOpenGLFunctions_3_3_Core& gl) {
   GLint maxSize = 4096;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  for (int i = 0; i < 6; ++i) {
-    photoTextures_[i].reset();
-    QImage image = photos_[i];
-    if (image.isNull()) continue;
-    if (image.width() > maxSize || image.height() > maxSize)
-      image = image.scaled(maxSize, maxSize, Qt::KeepAspectRatio, Qt::SmoothTransformation);
-    // QOpenGLTexture keeps the image's first row at t = 0, as blockToImage counts rows.
-    auto texture = std::make_unique<QOpenGLTexture>(image.convertToFormat(QImage::Format_RGBA8888),
-                                                    QOpenGLTexture::GenerateMipMaps);
-    texture->setMinMagFilters(QOpenGLTexture::LinearMipMapLinear, QOpenGLTexture::Linear);
-    texture->setWrapMode(QOpenGLTexture::ClampToEdge);
-    photoTextures_[i] = std::move(texture);
-  }
+  gl.glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  return maxSize;
+}
+
+}  // namespace
+
+void Viewport3D::uploadPhotos() {
+  const int maxSize = maxTextureSize(*this);
+  for (int i = 0; i < 6; ++i) photoTextures_[i] = surfaceTexture(photos_[i], maxSize);
   photosDirty_ = false;
+}
+
+void Viewport3D::uploadAppearance() {
+  const int maxSize = maxTextureSize(*this);
+  for (int i = 0; i < 6; ++i) faceAppearanceTextures_[i] = surfaceTexture(faceAppearance_[i], maxSize);
+  cutAppearanceTexture_ = surfaceTexture(cutAppearance_.surface.image, maxSize);
+  appearanceDirty_ = false;
 }
 
 void Viewport3D::paintGL() {
@@ -373,6 +416,7 @@ void Viewport3D::paintGL() {
     modelDirty_ = false;
   }
   if (photosDirty_) uploadPhotos();
+  if (appearanceDirty_) uploadAppearance();
   if (partDirty_) {
     if (!partRenderer_) partRenderer_ = std::make_unique<PartMeshRenderer>();
     if (part_) partRenderer_->upload(*part_);
@@ -555,9 +599,11 @@ void Viewport3D::drawBlock(bool ghost) {
   glBindVertexArray(vertexArray_);
   for (int face = 0; face < 6; ++face) {
     const bool photo = showPhotos_ && !ghost && photoTextures_[face];
+    const bool own = !photo && !ghost && showsFaceAppearance() && faceAppearanceTextures_[face];
     program.setUniformValue("u_faceIndex", face);
-    program.setUniformValue("u_showPhoto", photo);
+    program.setUniformValue("u_showPhoto", photo || own);
     if (photo) photoTextures_[face]->bind(1);
+    if (own) faceAppearanceTextures_[face]->bind(1);
     glDrawArrays(GL_TRIANGLES, face * 6, 6);
   }
   glActiveTexture(GL_TEXTURE0);
@@ -587,8 +633,11 @@ void Viewport3D::drawCap() {
   if (polygon.size() < 3) return;
   const glm::vec3 n = gizmo_.normal();
   std::vector<Vertex> vertices;
+  const bool own = showsCutAppearance() && cutAppearanceTexture_;
   for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
-    for (std::size_t k : {std::size_t{0}, i, i + 1}) vertices.push_back({polygon[k], n, glm::vec2(0.0f)});
+    for (std::size_t k : {std::size_t{0}, i, i + 1})
+      vertices.push_back(
+          {polygon[k], n, own ? cutAppearance_.surface.textureCoordinates(polygon[k]) : glm::vec2(0.0f)});
   glBindBuffer(GL_ARRAY_BUFFER, capBuffer_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
                GL_STREAM_DRAW);
@@ -596,12 +645,14 @@ void Viewport3D::drawCap() {
   QOpenGLShaderProgram& program = sceneProgram();
   program.setUniformValue("u_pass", 1);
   program.setUniformValue("u_faceIndex", -1);
-  program.setUniformValue("u_showPhoto", false);
+  program.setUniformValue("u_showPhoto", own);
+  if (own) cutAppearanceTexture_->bind(1);
   glEnable(GL_POLYGON_OFFSET_FILL);  // wins over a face it lies on
   glPolygonOffset(-1.0f, -1.0f);
   glBindVertexArray(capArray_);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
   glDisable(GL_POLYGON_OFFSET_FILL);
+  glActiveTexture(GL_TEXTURE0);
 }
 
 // --- Overlay (QPainter, full resolution) -------------------------------------------------------------

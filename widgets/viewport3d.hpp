@@ -44,6 +44,7 @@
 #include "orbit_camera.hpp"
 #include "render/board_wood.hpp"
 #include "render/wood_model.hpp"
+#include "surface_image.hpp"
 
 class QOpenGLFramebufferObject;
 class QOpenGLShaderProgram;
@@ -89,6 +90,16 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void setFacePhotos(const std::array<QImage, 6>& photos);
   void setShowPhotos(bool show);
   bool showPhotos() const { return showPhotos_; }
+
+  // The faces' own appearance (the photo-true faces, issue 17; A..F, null where a face has none), laid on
+  // the faces as the photos are while `forModel` is the view's model; otherwise (a preview, an edit not
+  // yet re-made) the faces show the model's wood. The photos, when shown, win.
+  void setFaceAppearance(std::shared_ptr<const WoodModel> forModel, const std::array<QImage, 6>& faces);
+  // The cut surface's own appearance, likewise, while the view shows its model and cut plane.
+  void setCutAppearance(const CutAppearance& cut);
+  // Whether the last frame laid appearance pictures on the faces / on the cut.
+  bool showsFaceAppearance() const;
+  bool showsCutAppearance() const;
 
   // A part placed in the block (block mm; null: none). Uploads on the next frame.
   void setPart(std::shared_ptr<const Mesh> placedMesh);
@@ -155,6 +166,7 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   int chooseDivisor() const;
   void uploadGeometry();
   void uploadPhotos();
+  void uploadAppearance();
   // Draws the wood picture into `target`, only rows [rowBegin, rowEnd) (OpenGL rows, bottom-up).
   void renderScene(QOpenGLFramebufferObject& target, int rowBegin, int rowEnd);
   void noteCost(double ms, double pixels);
@@ -189,6 +201,11 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   bool photosDirty_ = false;
   bool showPhotos_ = false;
 
+  std::shared_ptr<const WoodModel> faceAppearanceModel_;
+  std::array<QImage, 6> faceAppearance_;
+  CutAppearance cutAppearance_;
+  bool appearanceDirty_ = false;
+
   // Interaction.
   DragMode dragMode_ = DragMode::None;
   QPointF lastMouse_;
@@ -208,6 +225,8 @@ class Viewport3D : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   unsigned growthTexture_ = 0;  // the WoodProgram's growth table (re-bound every frame)
   unsigned vertexArray_ = 0, vertexBuffer_ = 0, capArray_ = 0, capBuffer_ = 0, emptyArray_ = 0;
   std::array<std::unique_ptr<QOpenGLTexture>, 6> photoTextures_;
+  std::array<std::unique_ptr<QOpenGLTexture>, 6> faceAppearanceTextures_;
+  std::unique_ptr<QOpenGLTexture> cutAppearanceTexture_;
   // The wood picture: reduced (while interacting) and full resolution, the latter drawn in horizontal
   // bands over several frames when refining after an interaction, so input is handled between bands.
   std::unique_ptr<QOpenGLFramebufferObject> reducedFbo_, fullFbo_;

@@ -30,6 +30,7 @@ void Document::reset(const Project& project, const QString& path, const QString&
   emit photosChanged();
   emit annotationsChanged();
   emit logChanged();
+  emit appearanceChanged();
   emit modifiedChanged(false);
 }
 
@@ -100,6 +101,14 @@ void Document::setCutEnabled(bool enabled) {
   if (!project_.cutPlane) project_.cutPlane = CutPlaneSetting{};
   dirtyWithoutUndo_ = true;
   emit cutPlaneChanged();
+  emit modifiedChanged(true);
+}
+
+void Document::setAppearance(Appearance appearance) {
+  if (project_.appearance == appearance) return;
+  project_.appearance = appearance;
+  dirtyWithoutUndo_ = true;
+  emit appearanceChanged();
   emit modifiedChanged(true);
 }
 

@@ -68,6 +68,10 @@ class Document : public QObject {
   void editKnots(std::vector<Knot> knots, const QString& undoText);
   // The cut's visibility is a view setting: saved with the project, but not an undo step.
   void setCutEnabled(bool enabled);
+  // How the surfaces are made (Project::appearance): the procedural model, or the block's own photos re-grown
+  // along the field (issue 17). A view choice like the cut's visibility: saved, not an undo step.
+  Appearance appearance() const { return project_.appearance; }
+  void setAppearance(Appearance appearance);
   // How sure the fit is (Project::ringUncertainty): a result of the fit, saved with the project but not
   // an undo step. It holds the fingerprint of its field, so it shows only while that field is the
   // document's (undoing the fit hides it, redoing shows it again).
@@ -107,6 +111,7 @@ class Document : public QObject {
   void logChanged();    // a log attached, removed or its knots edited (modelChanged may follow)
   void boardChanged();  // the board moved or resized
   void ringUncertaintyChanged();
+  void appearanceChanged();
 
  private:
   void rebuildModel();

@@ -89,6 +89,7 @@ void FacesController::renderFaces() {
 }
 
 void FacesController::renderFacesOf(std::shared_ptr<const WoodModel> model) {
+  renderedModel_ = model;
   const RenderSettings settings = settings_;
   if (renderJob_ && jobs_->isRunning(renderJob_)) jobs_->cancel(renderJob_);
   renderJob_ = jobs_->start(
@@ -112,6 +113,7 @@ void FacesController::renderFacesOf(std::shared_ptr<const WoodModel> model) {
 // The board's six faces: a quarter-resolution preview first, then full resolution; a newer edit
 // (board moved, knot edited, parameter changed) cancels the running one.
 void FacesController::renderBoardFaces() {
+  renderedModel_.reset();
   const ProjectLog log = *document_->log();
   const WoodParameters params = document_->project().params;
   const float pxPerMm = settings_.pxPerMm;
@@ -141,8 +143,24 @@ void FacesController::showRenderings(const QVariant& faces, bool final) {
   }
 }
 
+void FacesController::setAppearanceFaces(std::shared_ptr<const WoodModel> forModel,
+                                         const std::array<QImage, 6>& faces) {
+  appearanceModel_ = std::move(forModel);
+  appearanceFaces_ = faces;
+  viewport_->setFaceAppearance(appearanceModel_, faces);
+  updateFacesView();
+}
+
+bool FacesController::showsAppearanceFaces() const {
+  return appearanceModel_ && appearanceModel_ == renderedModel_;
+}
+
 void FacesController::updateFacesView() {
-  facesView_->setRenderings(renderings_);
+  std::array<QImage, 6> shown = renderings_;
+  if (showsAppearanceFaces())
+    for (int i = 0; i < 6; ++i)
+      if (!appearanceFaces_[i].isNull()) shown[i] = appearanceFaces_[i];
+  facesView_->setRenderings(shown);
   const bool photos = document_->hasPhotos() && !document_->log();  // a log's board has no photos
   if (!displayChosenByUser_) displayMode_ = photos ? 0 : 1;
   if (!photos && displayMode_ != 1) displayMode_ = 1;  // nothing to show or blend but the model

@@ -47,6 +47,13 @@ class FacesController : public EditorController {
   void showPreview(std::shared_ptr<const WoodModel> model);
   void renderFaces();
 
+  // The faces' own appearance (photo-true, issue 17) for `forModel`: shown as the model's faces (and on
+  // the 3D block) while that model is the one shown; a newer model shows its own rendering until its
+  // pictures come. Null model: none.
+  void setAppearanceFaces(std::shared_ptr<const WoodModel> forModel, const std::array<QImage, 6>& faces);
+  // Whether the faces view shows the appearance pictures now.
+  bool showsAppearanceFaces() const;
+
   bool showingPhotos() const;
   bool displayChosenByUser() const { return displayChosenByUser_; }
   // The user (or Reconstruct for them) chose what the faces show; it stays until the next document.
@@ -76,6 +83,9 @@ class FacesController : public EditorController {
   bool hasDocument_ = false;
   bool documentReadyPending_ = false;
   std::array<QImage, 6> renderings_;
+  std::shared_ptr<const WoodModel> renderedModel_;  // the model renderings_ are (being) made of
+  std::shared_ptr<const WoodModel> appearanceModel_;
+  std::array<QImage, 6> appearanceFaces_;
   int renderJob_ = 0;
   int displayMode_ = 0;  // FaceDisplay as int
   bool displayChosenByUser_ = false;

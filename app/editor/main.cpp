@@ -22,19 +22,30 @@ void fail(const QString& message) {
   QCoreApplication::exit(1);
 }
 
-// Saves the window once the document is ready and the 3D view has drawn at full resolution; exits 0
-// on success, 1 on any failure.
+void grabWhenDrawn(kerf::MainWindow& window, const QString& file) {
+  window.viewport()->refineNow();
+  // Give the GL views a few event-loop turns to draw their full-resolution frames.
+  QTimer::singleShot(400, &window, [&window, file] {
+    QDir().mkpath(QFileInfo(file).absolutePath());
+    if (kerf::grabWindowWithGl(&window).save(file)) {
+      QCoreApplication::exit(0);
+    } else {
+      fail(QStringLiteral("cannot write the screenshot %1").arg(file));
+    }
+  });
+}
+
+// Saves the window once the document is ready, its photo-true surfaces made (a project that shows them)
+// and the 3D view has drawn at full resolution; exits 0 on success, 1 on any failure.
 void screenshotWhenReady(kerf::MainWindow& window, const QString& file) {
   QObject::connect(&window, &kerf::MainWindow::documentReady, &window, [&window, file] {
-    window.viewport()->refineNow();
-    // Give the GL views a few event-loop turns to draw their full-resolution frames.
-    QTimer::singleShot(400, &window, [&window, file] {
-      QDir().mkpath(QFileInfo(file).absolutePath());
-      if (kerf::grabWindowWithGl(&window).save(file)) {
-        QCoreApplication::exit(0);
-      } else {
-        fail(QStringLiteral("cannot write the screenshot %1").arg(file));
-      }
+    auto* settled = new QTimer(&window);
+    settled->start(100);
+    QObject::connect(settled, &QTimer::timeout, &window, [&window, file, settled] {
+      if (window.appearance()->isWorking()) return;
+      settled->stop();
+      settled->deleteLater();
+      grabWhenDrawn(window, file);
     });
   });
   QObject::connect(&window, &kerf::MainWindow::documentFailed, &window, &fail);

@@ -10,6 +10,7 @@
 #include <QMainWindow>
 #include <array>
 
+#include "appearance_controller.hpp"
 #include "export_controller.hpp"
 #include "faces_controller.hpp"
 #include "files_controller.hpp"
@@ -58,6 +59,7 @@ class MainWindow : public QMainWindow {
   FacesController* faces() const { return faces_; }
   RingsController* rings() const { return rings_; }
   TextureController* texture() const { return texture_; }
+  AppearanceController* appearance() const { return appearance_; }
   LogBoardController* logBoard() const { return logBoard_; }
   ExportController* exports() const { return exports_; }
   FilesController* files() const { return files_; }
@@ -172,6 +174,7 @@ class MainWindow : public QMainWindow {
   FacesController* faces_ = nullptr;
   RingsController* rings_ = nullptr;
   TextureController* texture_ = nullptr;
+  AppearanceController* appearance_ = nullptr;
   LogBoardController* logBoard_ = nullptr;
   ExportController* exports_ = nullptr;
   FilesController* files_ = nullptr;

@@ -2,6 +2,7 @@
 // the window, and their news forwarded as the window's signals.
 #include <QStatusBar>
 
+#include "appearance_controller.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
 #include "parameter_panel.hpp"
@@ -13,13 +14,14 @@ void MainWindow::createControllers(RenderSettings settings) {
   faces_ = new FacesController(context, settings, facesView_, viewport_, cutView_);
   rings_ = new RingsController(context, faces_, facesView_, annotationLayer_);
   texture_ = new TextureController(context, faces_, rings_);
+  appearance_ = new AppearanceController(context, settings, faces_, cutView_, viewport_);
   logBoard_ = new LogBoardController(
       context, faces_,
       {logView_, boardControls_, knotTable_, panelControls_, panelPane_, viewport_, cutView_});
   exports_ = new ExportController(context, settings, viewport_);
   files_ = new FilesController(context, faces_);
-  for (EditorController* controller :
-       std::initializer_list<EditorController*>{faces_, rings_, texture_, logBoard_, exports_, files_})
+  for (EditorController* controller : std::initializer_list<EditorController*>{
+           faces_, rings_, texture_, appearance_, logBoard_, exports_, files_})
     connectController(controller);
   connect(facesView_, &FacesView::photoDropped, files_, &FilesController::dropPhoto);
   connect(facesView_, &FacesView::documentDropped, files_, &FilesController::openInstead);

@@ -6,6 +6,7 @@
 #include <QSettings>
 
 #include "annotation_layer.hpp"
+#include "appearance_controller.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
 
@@ -80,6 +81,8 @@ void MainWindow::createTextureMenu() {
       "Find the pores, rays and fibres (sizes, spacing, darkness) and the wood colours that make the faces "
       "look like the photos, each face compared with its own photo (end grain and side grain differ); fit "
       "the growth field first. Runs in the background (Esc cancels), the faces follow live; one undo step"));
+  texture->addSeparator();
+  texture->addAction(appearance_->photoTrueAction());
 }
 
 void MainWindow::createExportActions(QMenu* exportMenu) {
