@@ -241,13 +241,20 @@ void WorkPath::reconstruct() {
   input.heldOut = project.heldOutFaces;
   input.annotations = project.annotations;
   input.appearance = window_->texture()->textureOptions();
-  input.inferAppearance = inferAppearance_;
+  // The photo-true appearance shows the photos themselves: the procedural texture would not be seen, so its
+  // minute of inference is skipped (Texture ▸ Infer Texture from Photos still runs it).
+  const bool photoTrue = document->appearance() == Appearance::Photo;
+  const bool infer = inferAppearance_ && !photoTrue;
+  if (inferAppearance_ && photoTrue)
+    window_->logMessage("info", tr("The appearance is photo-true: Reconstruct fits the field and makes the "
+                                   "surfaces of the photos; the procedural texture is not inferred"));
+  input.inferAppearance = infer;
   input.detector = window_->rings()->detector();
   // After a correction only what depends on it runs again; with nothing changed, all of it (the user asked).
-  ReconstructPlan plan = planReconstruct(currentState(), inferAppearance_);
+  ReconstructPlan plan = planReconstruct(currentState(), infer);
   if (plan.nothing()) {
     plan = ReconstructPlan{};
-    plan.infer = inferAppearance_;
+    plan.infer = infer;
     window_->logMessage("info",
                         tr("Nothing changed since the wood was reconstructed: reconstructing it all again"));
   } else if (!plan.detect) {

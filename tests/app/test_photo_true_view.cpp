@@ -18,6 +18,7 @@
 #include "params/parameter_schema.hpp"
 #include "viewport3d.hpp"
 #include "window_grab.hpp"
+#include "work_path.hpp"
 
 using namespace kerf;
 
@@ -59,6 +60,7 @@ class TestPhotoTrueView : public QObject {
   void everyViewShowsThePhotoTrueSurfaces();
   void anEditShowsTheProceduralWoodUntilTheNewSurfacesLand();
   void theChoiceIsSavedAndTurnsOff();
+  void reconstructSkipsTheProceduralTexture();
   void cleanupTestCase() { window_.reset(); }
 
  private:
@@ -172,6 +174,32 @@ void TestPhotoTrueView::theChoiceIsSavedAndTurnsOff() {
   QVERIFY(!window_->cutView()->showsCutAppearance());
   QVERIFY(!facesAreGreen());
   QVERIFY(!appearance()->isWorking());
+}
+
+// With the photo-true appearance the procedural texture would not be seen: Reconstruct detects the rings
+// and fits the field, skips the minute of texture inference, and the photo-true surfaces of the new field
+// follow.
+void TestPhotoTrueView::reconstructSkipsTheProceduralTexture() {
+  appearance()->photoTrueAction()->trigger();
+  QCOMPARE(window_->document()->appearance(), Appearance::Photo);
+  WorkPath* path = window_->workPath();
+  QList<ReconstructStage> started;
+  QObject scope;
+  connect(path, &WorkPath::stageStarted, &scope, [&](ReconstructStage stage) { started << stage; });
+  QSignalSpy done(path, &WorkPath::reconstructed);
+  QSignalSpy failed(path, &WorkPath::reconstructFailed);
+  QSignalSpy faces(appearance(), &AppearanceController::facesMade);
+  const auto before = window_->document()->model();
+  path->reconstruct();
+  QTRY_VERIFY_WITH_TIMEOUT(done.count() + failed.count() > 0, kTimeoutMs);
+  QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
+  QVERIFY(started.contains(ReconstructStage::Field));
+  QVERIFY(!started.contains(ReconstructStage::Appearance));
+  QVERIFY(window_->document()->model() != before);  // a new field
+  QTRY_VERIFY_WITH_TIMEOUT(faces.count() > 0, kTimeoutMs);
+  waitUntilMade();
+  QVERIFY(window_->faces()->showsAppearanceFaces());
+  QVERIFY(facesAreGreen());
 }
 
 QTEST_MAIN(TestPhotoTrueView)
