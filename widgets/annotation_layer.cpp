@@ -135,8 +135,8 @@ QList<QAction*> AnnotationLayer::toolActions() const {
 }
 
 QList<QAction*> AnnotationLayer::editActions() const {
-  return {deleteAction_,   splitAction_,       joinAction_,        numberAction_,
-          renumberAction_, releaseKnotAction_, knotAccuracyAction_};
+  return {deleteAction_,   splitAction_,       joinAction_,         numberAction_,
+          renumberAction_, releaseKnotAction_, knotAccuracyAction_, knotEdgeAction_};
 }
 
 void AnnotationLayer::updateActions() {
@@ -148,6 +148,7 @@ void AnnotationLayer::updateActions() {
   splitAction_->setEnabled(!annotations_.traces.empty());
   releaseKnotAction_->setEnabled(!selectedKnots_.empty());
   knotAccuracyAction_->setEnabled(!selectedKnots_.empty());
+  knotEdgeAction_->setEnabled(!selectedKnots_.empty());
 }
 
 // --- State ---------------------------------------------------------------------------------------

@@ -86,6 +86,9 @@ class AnnotationLayer : public QObject {
   // Knot marks (annotation_layer_knots.cpp): release the selected knots' marks, or hold them again when
   // all are released; set their accuracy (mm); ask for it (non-blocking dialog).
   void toggleReleaseOfSelectedKnots();
+  // Ignore the knot's edge found around the selected marks (a wrong outline), or use it again when all are
+  // ignored.
+  void toggleIgnoredEdgeOfSelectedKnots();
   void setSelectedKnotAccuracy(float mm);
   void askKnotAccuracyForSelection();
 
@@ -167,6 +170,7 @@ class AnnotationLayer : public QObject {
   bool knotMoved_ = false;
   QAction* releaseKnotAction_ = nullptr;
   QAction* knotAccuracyAction_ = nullptr;
+  QAction* knotEdgeAction_ = nullptr;
   // Rubber band.
   std::optional<QPointF> bandStart_;
   QRectF band_;

@@ -1,6 +1,7 @@
 // AnnotationLayer: editing knot marks (issue 19 item 1). A mark holds the fitted knot's axis within its
 // accuracy unless released; Select drags a mark to where the knot's centre really comes out, R releases
-// or holds the selected knots' marks, M sets how accurate they are. Each edit is one undo step.
+// or holds the selected knots' marks, M sets how accurate they are, E drops (or takes back) the knot's edge
+// found around them on the photo when it is wrong. Each edit is one undo step.
 #include <QAction>
 #include <QInputDialog>
 #include <cmath>
@@ -23,7 +24,13 @@ void AnnotationLayer::createKnotActions() {
       tr("Mark ±mm"), QKeySequence(Qt::Key_M),
       tr("How sure you are of where the selected knots come out: the fitted knot passes within this "
          "many mm of each mark, drawn as the dashed circle (M)"));
+  knotEdgeAction_ = makeEditAction(
+      tr("No Edge"), QKeySequence(Qt::Key_E),
+      tr("The knot's edge found around the selected marks on the photo is wrong (a resin streak, a shadow or "
+         "a check beside the knot): do not size the knot by it, let the rings size it. Press again to use "
+         "the edge (E)"));
   connect(releaseKnotAction_, &QAction::triggered, this, &AnnotationLayer::toggleReleaseOfSelectedKnots);
+  connect(knotEdgeAction_, &QAction::triggered, this, &AnnotationLayer::toggleIgnoredEdgeOfSelectedKnots);
   connect(knotAccuracyAction_, &QAction::triggered, this, &AnnotationLayer::askKnotAccuracyForSelection);
 }
 
@@ -35,6 +42,7 @@ void AnnotationLayer::setKnotOutlines(std::vector<KnotOutline> outlines) {
 const KnotOutline* AnnotationLayer::outlineOfMark(std::size_t knot) const {
   if (knot >= annotations_.knots.size()) return nullptr;
   const KnotMark& m = annotations_.knots[knot];
+  if (m.ignoreEdge) return nullptr;  // not drawn, not said, until the fit's next outlines
   for (const KnotOutline& o : knotOutlines_)
     if (o.found && o.knot == m.knot && o.face == m.face && o.seed == m.point) return &o;
   return nullptr;
@@ -43,10 +51,14 @@ const KnotOutline* AnnotationLayer::outlineOfMark(std::size_t knot) const {
 QString AnnotationLayer::knotMarkText(std::size_t knot) const {
   const KnotMark& m = annotations_.knots[knot];
   const KnotOutline* o = outlineOfMark(knot);
-  const QString edge = o ? tr(" Its edge on the photo: %1 x %2 mm (the fitted knot's size follows it).")
-                               .arg(2.0 * o->semiAxesMm.x, 0, 'f', 1)
-                               .arg(2.0 * o->semiAxesMm.y, 0, 'f', 1)
-                         : QString();
+  const QString edge = m.ignoreEdge
+                           ? tr(" Its edge on the photo is ignored: the rings size the knot (E uses it "
+                                "again).")
+                       : o ? tr(" Its edge on the photo: %1 x %2 mm (the fitted knot's size follows it; E "
+                                "ignores a wrong edge).")
+                                 .arg(2.0 * o->semiAxesMm.x, 0, 'f', 1)
+                                 .arg(2.0 * o->semiAxesMm.y, 0, 'f', 1)
+                           : QString();
   if (m.released)
     return tr("Knot K%1 on face %2: released, the rings place the knot and this mark only says where to "
               "start (R holds it again; drag to move it)")
@@ -121,6 +133,22 @@ void AnnotationLayer::toggleReleaseOfSelectedKnots() {
   emit message(release ? tr("The rings place these knots now; their marks only say where to start (R holds "
                             "them again).")
                        : tr("The marks hold these knots again."));
+}
+
+void AnnotationLayer::toggleIgnoredEdgeOfSelectedKnots() {
+  if (selectedKnots_.empty()) {
+    emit message(tr("Select a knot mark first (Select, V)."));
+    return;
+  }
+  // Any mark whose edge is used: ignore them all; all ignored: use them all again.
+  bool ignore = false;
+  for (std::size_t k : selectedKnots_) ignore = ignore || !annotations_.knots[k].ignoreEdge;
+  Annotations after = annotations_;
+  for (std::size_t k : selectedKnots_) after.knots[k].ignoreEdge = ignore;
+  emitEdit(std::move(after), ignore ? tr("Ignore Knot Edges") : tr("Use Knot Edges"), {}, selectedKnots_);
+  emit message(ignore ? tr("The rings size these knots now, not their edges on the photos (E uses the edges "
+                           "again).")
+                      : tr("The knots' edges on the photos size them again."));
 }
 
 void AnnotationLayer::setSelectedKnotAccuracy(float mm) {

@@ -68,6 +68,7 @@ json annotationsToJson(const Annotations& annotations) {
     json k = {{"knot", mark.knot}, {"face", faceName(mark.face)}, {"point", {mark.point.x, mark.point.y}}};
     if (mark.accuracyMm != kDefaultKnotMarkAccuracyMm) k["accuracy_mm"] = mark.accuracyMm;
     if (mark.released) k["released"] = true;
+    if (mark.ignoreEdge) k["ignore_edge"] = true;
     knots.push_back(std::move(k));
   }
   return {{"units", "face_mm"}, {"traces", std::move(traces)}, {"knots", std::move(knots)}};
@@ -142,6 +143,12 @@ Annotations annotationsFromJson(const json& in, const Block& block) {
         if (!k["released"].is_boolean())
           throw InputError(what + ".released must be true or false, got " + describeJson(k["released"]));
         mark.released = k["released"].get<bool>();
+      }
+      if (k.contains("ignore_edge")) {
+        if (!k["ignore_edge"].is_boolean())
+          throw InputError(what + ".ignore_edge must be true or false, got " +
+                           describeJson(k["ignore_edge"]));
+        mark.ignoreEdge = k["ignore_edge"].get<bool>();
       }
       out.knots.push_back(mark);
     }

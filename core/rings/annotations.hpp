@@ -46,7 +46,9 @@ struct RingTrace {
 
 // Where a knot meets a face. A knot usually crosses the block: it has two marks (where it enters and
 // where it leaves), on two faces, sharing the knot id. The fit keeps the knot's axis within accuracyMm of
-// each mark (issue 19 item 1) unless the user released the mark, which then only seeds the knot.
+// each mark (issue 19 item 1) unless the user released the mark, which then only seeds the knot. The
+// knot's edge found around a mark on its photo sizes the knot (rings/knot_outline.hpp) unless the user says
+// that edge is wrong (ignoreEdge: a resin streak, a shadow or a check beside the knot, as dark as it).
 inline constexpr float kDefaultKnotMarkAccuracyMm = 1.0f;
 struct KnotMark {
   int knot = 0;  // knot id: marks with the same id are the same knot
@@ -54,6 +56,7 @@ struct KnotMark {
   glm::vec2 point{0.0f};  // face mm
   float accuracyMm = kDefaultKnotMarkAccuracyMm;
   bool released = false;
+  bool ignoreEdge = false;
 
   bool operator==(const KnotMark&) const = default;
 };

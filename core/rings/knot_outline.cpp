@@ -230,8 +230,18 @@ std::vector<KnotOutline> detectKnotOutlines(const std::array<Image, 6>& photos, 
                                             const KnotOutlineOptions& options) {
   std::vector<KnotOutline> out;
   out.reserve(marks.size());
-  for (const KnotMark& m : marks)
+  for (const KnotMark& m : marks) {
+    if (m.ignoreEdge) {
+      KnotOutline ignored;
+      ignored.knot = m.knot;
+      ignored.face = m.face;
+      ignored.seed = m.point;
+      ignored.note = "its edge on the photo is ignored (the mark says so)";
+      out.push_back(std::move(ignored));
+      continue;
+    }
     out.push_back(detectKnotOutline(photos[faceIndex(m.face)], block, m, options));
+  }
   return out;
 }
 

@@ -52,7 +52,8 @@ struct KnotOutline {
 KnotOutline detectKnotOutline(const Image& photo, const Block& block, const KnotMark& mark,
                               const KnotOutlineOptions& options = {});
 
-// One outline per mark, in the marks' order; faces without a photo give outlines not found.
+// One outline per mark, in the marks' order; faces without a photo, and marks whose edge the user ignores
+// (KnotMark::ignoreEdge), give outlines not found (the note says why).
 std::vector<KnotOutline> detectKnotOutlines(const std::array<Image, 6>& photos, const Block& block,
                                             const std::vector<KnotMark>& marks,
                                             const KnotOutlineOptions& options = {});

@@ -292,7 +292,8 @@ void TestAnnotationTools::rubberBandSelectsAndDeleteRemoves() {
 }
 
 // Issue 19 item 1: a knot mark is dragged to where the knot really comes out, released (R) so that the
-// rings place the knot, given an accuracy (M); each is one undo step, drawn as it is.
+// rings place the knot, given an accuracy (M), its edge on the photo ignored (E); each is one undo step,
+// drawn as it is.
 void TestAnnotationTools::dragsReleasesAndWeighsKnotMarks() {
   key(Qt::Key_V);
   const Annotations before = annotations();
@@ -330,6 +331,17 @@ void TestAnnotationTools::dragsReleasesAndWeighsKnotMarks() {
   key(Qt::Key_R);  // all released: R holds them again
   QVERIFY(!annotations().knots[0].released && !annotations().knots[1].released);
   checkUndoRedo(released);
+
+  // A wrong edge on the photo (a resin streak beside the knot): E ignores it, E again uses it.
+  const Annotations held = annotations();
+  key(Qt::Key_E);
+  QVERIFY(annotations().knots[0].ignoreEdge && annotations().knots[1].ignoreEdge);
+  QVERIFY(undo()->undoText().contains(QStringLiteral("Ignore Knot Edges")));
+  checkUndoRedo(held);
+  const Annotations ignored = annotations();
+  key(Qt::Key_E);
+  QVERIFY(!annotations().knots[0].ignoreEdge && !annotations().knots[1].ignoreEdge);
+  checkUndoRedo(ignored);
 
   key(Qt::Key_M);
   QInputDialog* dialog = nullptr;

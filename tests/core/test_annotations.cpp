@@ -342,23 +342,27 @@ TEST(Annotations, UnreadableAnnotationImageNamesTheFile) {
   }
 }
 
-TEST(Annotations, KnotMarkAccuracyAndReleaseRoundTripThroughJson) {
+TEST(Annotations, KnotMarkAccuracyReleaseAndIgnoredEdgeRoundTripThroughJson) {
   const Block block;
   Annotations a;
-  a.knots = {{3, FaceId::C, {12.0f, 30.0f}}, {3, FaceId::F, {25.0f, 8.0f}, 2.5f, true}};
+  a.knots = {{3, FaceId::C, {12.0f, 30.0f}}, {3, FaceId::F, {25.0f, 8.0f}, 2.5f, true, true}};
   const nlohmann::json json = annotationsToJson(a);
   // Defaults are not written, so files without these keys stay as they were.
   EXPECT_FALSE(json["knots"][0].contains("accuracy_mm"));
   EXPECT_FALSE(json["knots"][0].contains("released"));
   EXPECT_EQ(json["knots"][1]["accuracy_mm"], 2.5);
   EXPECT_EQ(json["knots"][1]["released"], true);
+  EXPECT_FALSE(json["knots"][0].contains("ignore_edge"));
+  EXPECT_EQ(json["knots"][1]["ignore_edge"], true);
   EXPECT_EQ(annotationsFromJson(json, block).knots, a.knots);
 
-  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{{"accuracy_mm", 0.0},
-                                                                                      {"accuracy_mm", -1.0},
-                                                                                      {"accuracy_mm", 80.0},
-                                                                                      {"accuracy_mm", "1"},
-                                                                                      {"released", 1}}) {
+  for (const auto& [key, value] :
+       std::vector<std::pair<std::string, nlohmann::json>>{{"accuracy_mm", 0.0},
+                                                           {"accuracy_mm", -1.0},
+                                                           {"accuracy_mm", 80.0},
+                                                           {"accuracy_mm", "1"},
+                                                           {"released", 1},
+                                                           {"ignore_edge", "yes"}}) {
     nlohmann::json bad = json;
     bad["knots"][0][key] = value;
     try {

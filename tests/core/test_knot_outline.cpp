@@ -93,6 +93,15 @@ TEST(KnotOutline, FindsTheEllipseOfADarkKnotFromAnOffCentreMark) {
   EXPECT_EQ(all[0].semiAxesMm, o.semiAxesMm);
   EXPECT_FALSE(all[1].found);
   EXPECT_EQ(all[1].note, "no photo of the face");
+
+  // A mark whose edge the user says is wrong gives none, with the reason, though the knot is there.
+  KnotMark ignored = mark;
+  ignored.ignoreEdge = true;
+  const std::vector<KnotOutline> without = detectKnotOutlines(photos, block, {ignored});
+  ASSERT_EQ(without.size(), 1u);
+  EXPECT_FALSE(without[0].found);
+  EXPECT_EQ(without[0].knot, 3);
+  EXPECT_NE(without[0].note.find("ignored"), std::string::npos) << without[0].note;
 }
 
 TEST(KnotOutline, PlainWoodAtTheMarkIsNoKnot) {
