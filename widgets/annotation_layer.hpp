@@ -171,6 +171,10 @@ class AnnotationLayer : public QObject {
   QAction* releaseKnotAction_ = nullptr;
   QAction* knotAccuracyAction_ = nullptr;
   QAction* knotEdgeAction_ = nullptr;
+  struct FlagTexts {
+    QString undo, status;
+  };
+  void toggleSelectedKnotFlag(bool KnotMark::*flag, const FlagTexts& on, const FlagTexts& off);
   // Rubber band.
   std::optional<QPointF> bandStart_;
   QRectF band_;

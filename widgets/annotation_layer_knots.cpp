@@ -118,37 +118,36 @@ bool AnnotationLayer::cancelKnotDrag() {
   return true;
 }
 
-void AnnotationLayer::toggleReleaseOfSelectedKnots() {
+// A yes/no of the selected knot marks as one undo step: on for all when any is off, off when all are on.
+void AnnotationLayer::toggleSelectedKnotFlag(bool KnotMark::*flag, const FlagTexts& on,
+                                             const FlagTexts& off) {
   if (selectedKnots_.empty()) {
     emit message(tr("Select a knot mark first (Select, V)."));
     return;
   }
-  // Any mark still holding: release them all; all released: hold them all again.
-  bool release = false;
-  for (std::size_t k : selectedKnots_) release = release || !annotations_.knots[k].released;
+  bool set = false;
+  for (std::size_t k : selectedKnots_) set = set || !(annotations_.knots[k].*flag);
   Annotations after = annotations_;
-  for (std::size_t k : selectedKnots_) after.knots[k].released = release;
-  emitEdit(std::move(after), release ? tr("Release Knot Marks") : tr("Hold Knots by Their Marks"), {},
-           selectedKnots_);
-  emit message(release ? tr("The rings place these knots now; their marks only say where to start (R holds "
-                            "them again).")
-                       : tr("The marks hold these knots again."));
+  for (std::size_t k : selectedKnots_) after.knots[k].*flag = set;
+  const FlagTexts& texts = set ? on : off;
+  emitEdit(std::move(after), texts.undo, {}, selectedKnots_);
+  emit message(texts.status);
+}
+
+void AnnotationLayer::toggleReleaseOfSelectedKnots() {
+  toggleSelectedKnotFlag(
+      &KnotMark::released,
+      {tr("Release Knot Marks"),
+       tr("The rings place these knots now; their marks only say where to start (R holds them again).")},
+      {tr("Hold Knots by Their Marks"), tr("The marks hold these knots again.")});
 }
 
 void AnnotationLayer::toggleIgnoredEdgeOfSelectedKnots() {
-  if (selectedKnots_.empty()) {
-    emit message(tr("Select a knot mark first (Select, V)."));
-    return;
-  }
-  // Any mark whose edge is used: ignore them all; all ignored: use them all again.
-  bool ignore = false;
-  for (std::size_t k : selectedKnots_) ignore = ignore || !annotations_.knots[k].ignoreEdge;
-  Annotations after = annotations_;
-  for (std::size_t k : selectedKnots_) after.knots[k].ignoreEdge = ignore;
-  emitEdit(std::move(after), ignore ? tr("Ignore Knot Edges") : tr("Use Knot Edges"), {}, selectedKnots_);
-  emit message(ignore ? tr("The rings size these knots now, not their edges on the photos (E uses the edges "
-                           "again).")
-                      : tr("The knots' edges on the photos size them again."));
+  toggleSelectedKnotFlag(
+      &KnotMark::ignoreEdge,
+      {tr("Ignore Knot Edges"),
+       tr("The rings size these knots now, not their edges on the photos (E uses the edges again).")},
+      {tr("Use Knot Edges"), tr("The knots' edges on the photos size them again.")});
 }
 
 void AnnotationLayer::setSelectedKnotAccuracy(float mm) {
