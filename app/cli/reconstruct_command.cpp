@@ -1,7 +1,9 @@
 // reconstruct: the whole pipeline from a sample's photos to a project, as the editor's one-click
 // Reconstruct: the rings (detected from the photos where the sample has no ring images, Mokume Sec. 5.1),
-// the growth field (Sec. 5.2), and with --texture the detail of the wood (Sec. 5.3.1). Each stage says
-// what it does and shows its progress; the project is written once, at the end.
+// the growth field (Sec. 5.2), and with --texture the detail of the wood (Sec. 5.3.1); --appearance photo
+// makes its surfaces of the photos themselves instead (issue 17, as the editor's Reconstruct with
+// Texture > Photo-true Appearance). Each stage says what it does and shows its progress; the project is
+// written once, at the end.
 #include <cstdio>
 
 #include "command.hpp"
@@ -21,6 +23,7 @@ Command addReconstructCommand(CLI::App& app) {
     FitSampleOptions fit;
     std::string out;
     bool texture = false;
+    std::string appearance = "procedural";
   };
   auto o = std::make_shared<Options>();
   reconstruct->fallthrough();  // kerf-cli's own --stats, -q may also follow the subcommand
@@ -36,6 +39,14 @@ Command addReconstructCommand(CLI::App& app) {
       "Also infer the pores, rays, fibres and colours from the photos (kerf-cli texture with "
       "its defaults). Off by default: it takes minutes (CN03: about 4 on two cores) where the "
       "rings and the fit take seconds");
+  reconstruct
+      ->add_option(
+          "--appearance", o->appearance,
+          "procedural (default): Kerf's procedural wood (its detail inferred with --texture). photo: "
+          "every surface made of the sample's own photos, re-grown along the fitted field (seconds; "
+          "docs/texture.md), stored in the project; the texture detail is then skipped unless "
+          "--texture asks for it too")
+      ->check(CLI::IsMember({"procedural", "photo"}));
   addFitSampleOptions(reconstruct, o->fit);
   return {
       reconstruct, [o](Context& context) {
@@ -55,11 +66,15 @@ Command addReconstructCommand(CLI::App& app) {
           const TextureInferenceOptions defaults;  // as kerf-cli texture without options
           inferProjectTexture(fitted.project, fitted.photos, defaults, context);
           std::printf("[2/2] done in %.1f s\n", textureClock.seconds());
-        } else {
+        } else if (o->appearance != "photo") {
           std::printf(
               "[2/2] texture detail skipped (it takes minutes): add --texture, or run kerf-cli "
               "texture %s --out %s later\n",
               o->out.c_str(), o->out.c_str());
+        }
+        if (o->appearance == "photo") {
+          std::printf("[2/2] photo-true appearance: the surfaces are made of the photos themselves\n");
+          storePhotoAppearance(fitted.project);
         }
         saveProject(fitted.project, o->out);
         std::printf("project written to %s\n", o->out.c_str());

@@ -6,7 +6,6 @@
 #include <filesystem>
 
 #include <sstream>
-#include "appearance/photo_true_appearance.hpp"
 #include "command.hpp"
 #include "io/image.hpp"
 #include "io/project.hpp"
@@ -72,25 +71,6 @@ Image comparisonSheet(const std::array<Image, 6>& photos, const std::array<Image
   return sheet;
 }
 
-// --appearance photo: checks that the photo-true appearance can be made (the project's photos, less its
-// held-out faces, load and fit their faces) and stores the choice.
-void storePhotoAppearance(Project& project, const std::string& photosFolder, const std::string& compare) {
-  if (!photosFolder.empty())
-    throw InputError(
-        "--photos is not used with --appearance photo: the photo-true appearance is made from the "
-        "project's own photos (its \"faces\")");
-  if (!compare.empty()) throw InputError("--compare is not used with --appearance photo; use render-faces");
-  const WoodModel model(project);
-  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces);
-  std::string faces;
-  for (FaceId face : appearance.exemplarFaces()) faces += faceLetter(face);
-  project.appearance = Appearance::Photo;
-  std::printf(
-      "appearance: photo-true, made from the photos of faces %s at %.3g px/mm%s\n", faces.c_str(),
-      appearance.synthesisPxPerMm(),
-      project.heldOutFaces.empty() ? "" : (" (held out: " + project.heldOutFaces.letters() + ")").c_str());
-}
-
 }  // namespace
 
 Command addTextureCommand(CLI::App& app) {
@@ -150,7 +130,13 @@ Command addTextureCommand(CLI::App& app) {
         if (!fs::exists(input)) throw InputError("no such project or sample folder: " + input.string());
         Project project = loadDocument(input);
         if (o->appearance == "photo") {
-          storePhotoAppearance(project, o->photos, o->compare);
+          if (!o->photos.empty())
+            throw InputError(
+                "--photos is not used with --appearance photo: the photo-true appearance is made from the "
+                "project's own photos (its \"faces\")");
+          if (!o->compare.empty())
+            throw InputError("--compare is not used with --appearance photo; use render-faces");
+          storePhotoAppearance(project);
           saveProject(project, o->out);
           std::printf("project written to %s\n", o->out.c_str());
           return;

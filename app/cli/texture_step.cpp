@@ -2,6 +2,9 @@
 
 #include <cstdio>
 
+#include "appearance/photo_true_appearance.hpp"
+#include "render/wood_model.hpp"
+
 namespace kerf::cli {
 
 TextureInferenceResult inferProjectTexture(Project& project, const std::array<Image, 6>& photos,
@@ -16,6 +19,18 @@ TextureInferenceResult inferProjectTexture(Project& project, const std::array<Im
   project.params = result.params;
   if (!project.rates) project.rates = rates;
   return result;
+}
+
+void storePhotoAppearance(Project& project) {
+  const WoodModel model(project);
+  const PhotoTrueAppearance appearance(model, loadAppearancePhotos(project), project.heldOutFaces);
+  std::string faces;
+  for (FaceId face : appearance.exemplarFaces()) faces += faceLetter(face);
+  project.appearance = Appearance::Photo;
+  std::printf(
+      "appearance: photo-true, made from the photos of faces %s at %.3g px/mm%s\n", faces.c_str(),
+      appearance.synthesisPxPerMm(),
+      project.heldOutFaces.empty() ? "" : (" (held out: " + project.heldOutFaces.letters() + ")").c_str());
 }
 
 }  // namespace kerf::cli

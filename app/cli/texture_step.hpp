@@ -17,4 +17,9 @@ namespace kerf::cli {
 TextureInferenceResult inferProjectTexture(Project& project, const std::array<Image, 6>& photos,
                                            TextureInferenceOptions options, Context& context);
 
+// --appearance photo (`texture`, `reconstruct`): checks that the photo-true appearance can be made (the
+// project's photos, less its held-out faces, load and fit their faces; InputError otherwise), stores the
+// choice in the project and says which photos it is made from.
+void storePhotoAppearance(Project& project);
+
 }  // namespace kerf::cli
