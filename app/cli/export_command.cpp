@@ -2,6 +2,7 @@
 // names (core/export/export_job.hpp, docs/export.md).
 #include <cstdio>
 
+#include "appearance/photo_true_source.hpp"
 #include "command.hpp"
 #include "export/export_job.hpp"
 #include "io/project.hpp"
@@ -102,6 +103,7 @@ Command addExportCommand(CLI::App& app) {
             const WoodModel model(project);
             if (const RingUncertainty* sure = project.currentRingUncertainty())
               request.ringUncertainty = *sure;
+            request.photoTrue = photoTrueSourceOf(project);
             const ExportSummary summary = runExport(model, request, context.progress());
             context.samples = summary.samples;
             std::printf("%s\n", summary.message.c_str());

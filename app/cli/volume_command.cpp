@@ -37,6 +37,9 @@ Command addExportVolumeCommand(CLI::App& app) {
             std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
                         o->out.c_str(), result.size.x, result.size.y, result.size.z, result.spacingMm.x,
                         result.bytes / 1048576.0);
+            const std::string warning = volumeAppearanceWarning(volumeQuantityFromName(o->quantity),
+                                                                project.appearance == Appearance::Photo);
+            if (!warning.empty()) std::fprintf(stderr, "kerf-cli: warning: %s\n", warning.c_str());
           }};
 }
 

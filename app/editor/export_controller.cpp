@@ -10,6 +10,7 @@
 #include <QStandardPaths>
 #include <algorithm>
 
+#include "appearance/photo_true_source.hpp"
 #include "document.hpp"
 #include "job_runner.hpp"
 #include "part_export_dialog.hpp"
@@ -76,6 +77,7 @@ PartExportDialog* ExportController::showPartExportDialog() {
 int ExportController::startExport(ExportRequest request) {
   const auto model = document_->model();
   if (const RingUncertainty* sure = document_->ringUncertainty()) request.ringUncertainty = *sure;
+  request.photoTrue = photoTrueSourceOf(document_->project());  // its photos are read on the job
   const QString path = QString::fromStdString(request.out.string());
   const int id = jobs_->start(
       tr("Exporting %1").arg(QFileInfo(path).fileName()),
