@@ -104,10 +104,13 @@ void ExportController::exportFaces() {
   if (folder.isEmpty()) return;
   const auto model = document_->model();
   const float pxPerMm = settings_.pxPerMm * 2;
+  const std::optional<PhotoTrueSource> photoTrue = photoTrueSourceOf(document_->project());
   jobs_->start(
       tr("Exporting faces"),
-      [model, folder, pxPerMm](const Progress& progress, const JobRunner::Preview&) -> QVariant {
-        const auto images = kerf::renderFaces(*model, pxPerMm, 2, progress);
+      [model, folder, pxPerMm, photoTrue](const Progress& progress, const JobRunner::Preview&) -> QVariant {
+        const auto images = photoTrue ? makePhotoTrueAppearance(*model, *photoTrue, progress.part(0.0, 0.05))
+                                            ->renderFaces(pxPerMm, progress.part(0.05, 1.0))
+                                      : kerf::renderFaces(*model, pxPerMm, 2, progress);
         for (FaceId face : kAllFaces) {
           writeImage((QDir(folder).filePath(QString("%1.png").arg(QChar(faceLetter(face))))).toStdString(),
                      images[faceIndex(face)]);

@@ -105,7 +105,8 @@ ExportSummary runExport(const WoodModel& model, const ExportRequest& request, co
       writeLayeredImage(request.out, image, request.image);
       progress.set(1.0);
       const std::size_t pixels = static_cast<std::size_t>(image.colour.width) * image.colour.height;
-      summary.samples = pixels * (request.samples * request.samples + 1);
+      // Model evaluations: the colour's supersamples (none for the photo-true colour) and the growth.
+      summary.samples = pixels * ((photoTrue ? 0 : request.samples * request.samples) + 1);
       summary.message =
           std::string(request.face ? "face " + std::string(1, faceLetter(*request.face)) : "cut") +
           " written to " + out + appearanceNote(photoTrue) + " (" +
