@@ -65,9 +65,13 @@ Image interleave(std::initializer_list<const Image*> parts) {
   return out;
 }
 
-// Whose colours the image shows: the procedural model's or the photo-true appearance's (issue 17).
+// Whose colours the image shows: the procedural model's or the photo-true appearance's (issue 17); in the
+// description too, as TIFF keeps no custom attribute.
 std::string appearanceText(const LayeredImage& image) {
   return image.photoTrue ? "photo-true" : "procedural";
+}
+std::string colourName(const LayeredImage& image) {
+  return image.photoTrue ? "colour (photo-true)" : "colour";
 }
 
 std::string floatText(float value) {
@@ -107,7 +111,9 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
   PngWriteOptions options;
   options.bits = growth ? 16 : 8;
   options.pxPerMm = image.pxPerMm;
-  std::string description = "Kerf " + imageLayerName(layer) + ", " + scaleText(image.pxPerMm);
+  const bool colour = layer == ImageLayer::Colour;
+  std::string description =
+      "Kerf " + (colour ? colourName(image) : imageLayerName(layer)) + ", " + scaleText(image.pxPerMm);
   std::string growthRange;
   if (growth) {  // 16-bit grey over the image's growth range (inside the block)
     float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
@@ -129,8 +135,8 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
                   {"Description", description},
                   {"Kerf:px_per_mm", floatText(image.pxPerMm)},
                   {"Kerf:mm_per_pixel", floatText(1.0f / image.pxPerMm)},
-                  {"Kerf:layer", imageLayerName(layer)},
-                  {"Kerf:appearance", appearanceText(image)}};
+                  {"Kerf:layer", imageLayerName(layer)}};
+  if (colour) options.text.push_back({"Kerf:appearance", appearanceText(image)});
   if (growth) options.text.push_back({"Kerf:growth_range", growthRange});
   writePngFile(temporary, pixels, options, path);
 }
@@ -138,7 +144,7 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
 void writeTiff(const std::filesystem::path& path, const std::filesystem::path& temporary,
                const LayeredImage& image, bool extraLayers) {
   std::vector<OiioPage> pages{page(image.colour, "uint16", {})};
-  setScale(pages[0], image.pxPerMm, "Kerf colour, " + scaleText(image.pxPerMm));
+  setScale(pages[0], image.pxPerMm, "Kerf " + colourName(image) + ", " + scaleText(image.pxPerMm));
   pages[0].textAttributes.push_back({"Kerf:appearance", appearanceText(image)});
   if (image.colour.channels == 4) pages[0].intAttributes.push_back({"oiio:UnassociatedAlpha", 1});  // as PNG
   if (extraLayers) {
@@ -175,7 +181,8 @@ void writeExr(const std::filesystem::path& path, const std::filesystem::path& te
     exr.channelTypes.push_back(colourType);
   }
   setScale(exr, image.pxPerMm,
-           "Kerf colour (linear)" + std::string(options.extraLayers ? ", growth (years), rings" : "") + ", " +
+           "Kerf " + colourName(image) + " (linear)" +
+               std::string(options.extraLayers ? ", growth (years), rings" : "") + ", " +
                scaleText(image.pxPerMm));
   exr.textAttributes.push_back({"compression", "zip"});
   exr.textAttributes.push_back({"Kerf:appearance", appearanceText(image)});

@@ -16,6 +16,7 @@
 #include "export/export_job.hpp"
 #include "export/photo_true_part_bake.hpp"
 #include "io/image.hpp"
+#include "io/png_codec.hpp"
 #include "io/project.hpp"
 #include "mesh/bake_part_texture.hpp"
 #include "mesh/mesh_loader.hpp"
@@ -93,6 +94,10 @@ TEST(PhotoTrueExport, FaceAndCutImagesAreTheAppearancesOwn) {
   faceRequest.face = FaceId::C;
   const ExportSummary face = runExport(*p.model, faceRequest);
   EXPECT_NE(face.message.find("photo-true"), std::string::npos) << face.message;
+  bool saysPhotoTrue = false;  // the file says whose colours it holds
+  for (const PngText& text : readPngInfo(p.dir / "face_c.png").text)
+    saysPhotoTrue = saysPhotoTrue || (text.key == "Kerf:appearance" && text.value == "photo-true");
+  EXPECT_TRUE(saysPhotoTrue);
   const Image written = readImage(p.dir / "face_c.png");
   const Image expected = appearance.renderFace(FaceId::C, {kSide, kSide});
   EXPECT_LE(maxDifference(written, expected), 0.5f / 255 + 1e-4f);  // 8-bit PNG
