@@ -17,18 +17,22 @@ namespace {
 constexpr int kMaxSynthesisSide = 16384;
 constexpr std::uint32_t kPartSalt = 0x9A27u;  // one seed for a part's atlas (mixed with model.seed)
 
-// An atlas of the same charts at the photos' texels per mm: the resolution is raised until it fits.
+// An atlas of the same charts at the photos' texels per mm: its side raised until they fit at that scale
+// (only the charts' rectangles are synthesised, so the side need not be the smallest).
 UvAtlas synthesisAtlas(const Mesh& placed, const UvAtlas& part, float pxPerMm, int padding) {
   UvAtlasOptions options;
   options.padding = padding;
   options.maxTexelsPerMm = pxPerMm;
-  double side = std::ceil(part.resolution * pxPerMm / part.texelsPerMm * 1.05) + 4 * padding;
-  for (int attempt = 0; attempt < 8; ++attempt) {
+  double side = std::ceil(part.resolution * pxPerMm / part.texelsPerMm * 1.05) + 4.0 * padding;
+  for (;;) {
     options.resolution = static_cast<int>(std::clamp(side, 16.0, double(kMaxSynthesisSide)));
-    UvAtlas atlas = buildUvAtlas(placed, options);
-    if (atlas.texelsPerMm >= pxPerMm * 0.999f) return atlas;
+    try {
+      UvAtlas atlas = buildUvAtlas(placed, options);
+      if (atlas.texelsPerMm >= pxPerMm * 0.999f) return atlas;
+    } catch (const InputError&) {  // too many pieces for this side: a larger one may do
+    }
     if (options.resolution == kMaxSynthesisSide) break;
-    side = std::ceil(options.resolution * std::max(1.05, pxPerMm / atlas.texelsPerMm * 1.02));
+    side = options.resolution * 1.25 + 1.0;
   }
   std::ostringstream s;
   s.precision(3);
@@ -88,6 +92,66 @@ TexelSurface texelSurface(const UvAtlas& atlas) {
   return s;
 }
 
+SurfaceGuidance crop(const SurfaceGuidance& g, int x0, int y0, int w, int h) {
+  SurfaceGuidance out;
+  out.width = w;
+  out.height = h;
+  for (int y = y0; y < y0 + h; ++y) {
+    const std::size_t row = std::size_t(y) * g.width + x0;
+    out.features.insert(out.features.end(), g.features.begin() + row * kGuidanceChannels,
+                        g.features.begin() + (row + w) * kGuidanceChannels);
+    out.grainAngle.insert(out.grainAngle.end(), g.grainAngle.begin() + row, g.grainAngle.begin() + row + w);
+    out.inside.insert(out.inside.end(), g.inside.begin() + row, g.inside.begin() + row + w);
+  }
+  return out;
+}
+
+struct Rect {
+  int x = 0, y = 0, w = 0, h = 0;
+};
+
+// Large charts' rectangles (with their gutters) are synthesised each on its own, with its own seed: the
+// charts are islands anyway, and the shelves' empty space, which would cost as much as wood, is left out.
+// The small ones (a synthesis has a fixed cost of about a 64 x 64 target) together in the rectangle around
+// them all: the packing sorts charts by height, so they share the last shelves.
+std::vector<Rect> synthesisRects(const UvAtlas& atlas, int width, int height) {
+  constexpr int kOwnSynthesis = 64 * 64;
+  std::vector<Rect> rects(1, Rect{width, height, 0, 0});  // [0]: around the small charts (empty: none)
+  int x1 = 0, y1 = 0;
+  for (const UvAtlas::Chart& c : atlas.charts) {
+    const Rect r{c.x, c.y, std::min(c.width, width - c.x), std::min(c.height, height - c.y)};
+    if (r.w <= 0 || r.h <= 0) continue;
+    if (r.w * r.h >= kOwnSynthesis) {
+      rects.push_back(r);
+      continue;
+    }
+    rects[0].x = std::min(rects[0].x, r.x), rects[0].y = std::min(rects[0].y, r.y);
+    x1 = std::max(x1, r.x + r.w), y1 = std::max(y1, r.y + r.h);
+  }
+  rects[0].w = std::max(0, x1 - rects[0].x), rects[0].h = std::max(0, y1 - rects[0].y);
+  return rects;
+}
+
+// The rectangles synthesised in order (a large chart over the small charts' rectangle where they overlap).
+Image synthesiseCharts(const PhotoTrueAppearance& appearance, const UvAtlas& atlas, const SurfaceGuidance& g,
+                       const Progress& progress) {
+  Image out(g.width, g.height, 3);
+  const std::vector<Rect> rects = synthesisRects(atlas, g.width, g.height);
+  double total = 0, done = 0;
+  for (const Rect& r : rects) total += double(r.w) * r.h;
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    const Rect& r = rects[i];
+    if (r.w <= 0 || r.h <= 0) continue;
+    const double area = double(r.w) * r.h;
+    const Image chart =
+        appearance.renderGuidance(crop(g, r.x, r.y, r.w, r.h), kPartSalt + 0x9E3779B9u * std::uint32_t(i),
+                                  progress.part(done / total, (done + area) / total));
+    done += area;
+    for (int y = 0; y < r.h; ++y) std::copy_n(chart.pixel(0, y), 3 * r.w, out.pixel(r.x, r.y + y));
+  }
+  return out;
+}
+
 glm::vec3 bilinear(const Image& image, glm::vec2 p) {
   const float x = std::clamp(p.x, 0.0f, image.width - 1.0f), y = std::clamp(p.y, 0.0f, image.height - 1.0f);
   const int x0 = std::min(static_cast<int>(x), std::max(image.width - 2, 0));
@@ -115,7 +179,7 @@ BakedTexture bakePhotoTruePart(const PhotoTrueAppearance& appearance, const Wood
   const TexelSurface surface = texelSurface(synth);
   const SurfaceGuidance guidance =
       computeTexelGuidance(model, surface, appearance.options().weights, progress.part(0.0, 0.1));
-  const Image synthesised = appearance.renderGuidance(guidance, kPartSalt, progress.part(0.1, 0.9));
+  const Image synthesised = synthesiseCharts(appearance, synth, guidance, progress.part(0.1, 0.9));
   // Onto the part's atlas through each triangle: a point's texel in the synthesis atlas from its
   // barycentric coordinates there (the triangles are the same, in the same order).
   const float side = float(synth.resolution);

@@ -7,7 +7,8 @@
 // result is resampled onto the part's atlas through each triangle (the bake's supersampling averages it
 // when the part's texture is coarser). Each texel of the synthesis atlas has its own point in the block
 // and its own frame (the triangle's steps in 3D per texel right and down), so the guidance is that of the
-// true surface (appearance/texel_guidance.hpp); the charts are separate regions.
+// true surface (appearance/texel_guidance.hpp); the charts are separate regions. Each large chart's
+// rectangle is synthesised on its own (the atlas' empty space is not), the small charts together.
 //
 // Seams: each chart is synthesised as an island of the atlas. Where two charts meet on the part (a box's
 // edge, or the border between two charts of a curved surface) the rings, the heart/sap boundary and the
