@@ -24,7 +24,8 @@ std::string appearanceNote(const PhotoTrueAppearance* photoTrue) {
 bool writesColour(const ExportRequest& request, ExportKind kind) {
   switch (kind) {
     case ExportKind::Image:
-      return lowerExtension(request.out) != ".png" || request.image.pngLayer == ImageLayer::Colour;
+      return exportFormatOf(request.out)->format != ExportFormat::Png ||
+             request.image.pngLayer == ImageLayer::Colour;
     case ExportKind::DepthStack:
       return request.image.pngLayer == ImageLayer::Colour;
     case ExportKind::Part:

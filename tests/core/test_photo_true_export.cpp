@@ -276,4 +276,7 @@ TEST(PhotoTrueExport, MissingPhotoIsAnErrorNamingTheFile) {
     EXPECT_NE(std::string(e.what()).find("C_col.png"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(p.dir / "face_a.png"));
+  // A PNG of the growth layer shows no colour: the photos are not read.
+  r.image.pngLayer = ImageLayer::Growth;
+  EXPECT_NO_THROW(runExport(*p.model, r));
 }
