@@ -12,6 +12,8 @@
 
 #include "appearance/photo_true_appearance.hpp"
 #include "appearance/photo_true_source.hpp"
+#include "appearance/surface_grid.hpp"
+#include "appearance/texel_guidance.hpp"
 #include "demo/demo_block.hpp"
 #include "export/export_job.hpp"
 #include "export/photo_true_part_bake.hpp"
@@ -279,4 +281,37 @@ TEST(PhotoTrueExport, MissingPhotoIsAnErrorNamingTheFile) {
   // A PNG of the growth layer shows no colour: the photos are not read.
   r.image.pngLayer = ImageLayer::Growth;
   EXPECT_NO_THROW(runExport(*p.model, r));
+}
+
+TEST(PhotoTrueExport, TexelGuidanceOfAFaceIsTheFacesGuidance) {
+  // The texels of a face given one by one (points and frames of its grid) have the face's features: the
+  // same phase, sawing, density and sapwood, the same grain direction inside (the averaging differs only
+  // at the border).
+  const Project project = demoProject(7);
+  const WoodModel model(project);
+  for (FaceId face : {FaceId::B, FaceId::C}) {  // end grain, side grain
+    const SurfaceGrid grid = faceGrid(project.block, face, {40, 40});
+    TexelSurface texels;
+    texels.width = texels.height = 40;
+    for (int y = 0; y < 40; ++y)
+      for (int x = 0; x < 40; ++x) {
+        texels.point.push_back(grid.point(float(x), float(y)));
+        texels.right.push_back(grid.right);
+        texels.down.push_back(grid.down);
+        texels.region.push_back(0);
+      }
+    const SurfaceGuidance a = computeGuidance(model, grid, {}), b = computeTexelGuidance(model, texels, {});
+    int turned = 0;
+    for (int y = 10; y < 30; ++y)
+      for (int x = 10; x < 30; ++x) {
+        for (int c : {0, 1, 2, 5}) EXPECT_NEAR(a.at(x, y)[c], b.at(x, y)[c], 1e-3f) << "channel " << c;
+        // The growth gradient's finite differences differ (the grid's neighbours a pixel apart, here half a
+        // texel each way in 3D): what depends on it agrees within a few percent of the weights.
+        for (int c : {3, 4, 7, 8}) EXPECT_NEAR(a.at(x, y)[c], b.at(x, y)[c], 0.25f) << "channel " << c;
+        const float d =
+            std::remainder(a.grainAngle[y * 40 + x] - b.grainAngle[y * 40 + x], 2.0f * 3.14159265f);
+        turned += std::abs(d) > 0.15f ? 1 : 0;
+      }
+    EXPECT_LT(turned, 20) << "face " << faceLetter(face);  // of 400
+  }
 }
