@@ -28,6 +28,7 @@
 #include "render/wood_model.hpp"
 #include "test_files.hpp"
 #include "util/error.hpp"
+#include "util/parallel.hpp"
 
 using namespace kerf;
 namespace fs = std::filesystem;
@@ -314,4 +315,20 @@ TEST(PhotoTrueExport, TexelGuidanceOfAFaceIsTheFacesGuidance) {
       }
     EXPECT_LT(turned, 20) << "face " << faceLetter(face);  // of 400
   }
+}
+
+TEST(PhotoTrueExport, PartTextureIsTheSameWhateverTheThreads) {
+  const PhotoProject p("part-threads");
+  const Mesh cube = cubePart(p.dir);
+  UvAtlasOptions options;
+  options.resolution = 64;
+  const UvAtlas atlas = buildUvAtlas(cube, options);
+  const PhotoTrueAppearance appearance = p.appearance();
+  const int threads = workerThreads();
+  setWorkerThreads(1);
+  const BakedTexture one = bakePhotoTruePart(appearance, *p.model, cube, atlas, 1);
+  setWorkerThreads(2);
+  const BakedTexture two = bakePhotoTruePart(appearance, *p.model, cube, atlas, 1);
+  setWorkerThreads(threads);
+  EXPECT_EQ(one.image.pixels, two.image.pixels);
 }
