@@ -83,10 +83,17 @@ float meanDifference(const Image& a, const Image& b) {
   return float(sum / a.pixels.size());
 }
 
-// A 30 mm cube in the middle of the 40 mm block: six charts, one per side.
-Mesh cubePart(const fs::path& dir) {
-  return loadMesh(kerf::testing::writeBoxObj(dir / "cube.obj", {30, 30, 30}));
-}
+// A 30 mm cube in the middle of the 40 mm block (six charts, one per side) and its atlas.
+struct CubePart {
+  Mesh mesh;
+  UvAtlas atlas;
+  CubePart(const fs::path& dir, int resolution) {
+    mesh = loadMesh(kerf::testing::writeBoxObj(dir / "cube.obj", {30, 30, 30}));
+    UvAtlasOptions options;
+    options.resolution = resolution;
+    atlas = buildUvAtlas(mesh, options);
+  }
+};
 
 }  // namespace
 
@@ -154,10 +161,9 @@ TEST(PhotoTrueExport, PartTexelsComeFromThePhotosAndNeverFromHeldOutFaces) {
     }
     writeImage(file, photo);
   }
-  const Mesh cube = cubePart(p.dir);
-  UvAtlasOptions options;
-  options.resolution = 96;
-  const UvAtlas atlas = buildUvAtlas(cube, options);
+  const CubePart part(p.dir, 96);
+  const Mesh& cube = part.mesh;
+  const UvAtlas& atlas = part.atlas;
   const BakedTexture baked = bakePhotoTruePart(p.appearance(), *p.model, cube, atlas, 2);
   double red = 0;
   float green = 0;
@@ -185,10 +191,9 @@ TEST(PhotoTrueExport, PartTextureFollowsTheFieldOnEveryChart) {
   // them through each texel's point and frame. A chart compared with its truth turned by 90 degrees
   // (same wood, wrong place) scores clearly less.
   const PhotoProject p("part-field");
-  const Mesh cube = cubePart(p.dir);
-  UvAtlasOptions options;
-  options.resolution = 128;
-  const UvAtlas atlas = buildUvAtlas(cube, options);
+  const CubePart part(p.dir, 128);
+  const Mesh& cube = part.mesh;
+  const UvAtlas& atlas = part.atlas;
   const BakedTexture photoTrue = bakePhotoTruePart(p.appearance(), *p.model, cube, atlas, 2);
   const BakedTexture truth = bakePartTexture(*p.model, atlas, 2);
   auto luminance = [](const Image& image, const cv::Rect& r) {
@@ -319,10 +324,9 @@ TEST(PhotoTrueExport, TexelGuidanceOfAFaceIsTheFacesGuidance) {
 
 TEST(PhotoTrueExport, PartTextureIsTheSameWhateverTheThreads) {
   const PhotoProject p("part-threads");
-  const Mesh cube = cubePart(p.dir);
-  UvAtlasOptions options;
-  options.resolution = 64;
-  const UvAtlas atlas = buildUvAtlas(cube, options);
+  const CubePart part(p.dir, 64);
+  const Mesh& cube = part.mesh;
+  const UvAtlas& atlas = part.atlas;
   const PhotoTrueAppearance appearance = p.appearance();
   const int threads = workerThreads();
   setWorkerThreads(1);
