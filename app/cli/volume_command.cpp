@@ -22,7 +22,8 @@ Command addExportVolumeCommand(CLI::App& app) {
   volume->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   volume
       ->add_option("--quantity", o->quantity,
-                   "growth (float years), color (uint8 RGB) or ring-uncertainty (float mm: how sure the fit "
+                   "growth (float years), color (uint8 RGB, the procedural model's) or ring-uncertainty "
+                   "(float mm: how sure the fit "
                    "is, 1 sigma; from `fit --uncertainty N`)")
       ->check(CLI::IsMember({"growth", "color", "ring-uncertainty"}));
   cli::addNumber(volume, "--res", o->resolution, "Samples along the block's longest side", 1, 4096);
