@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/geometric.hpp>
 #include <sstream>
 
 #include "appearance/photo_true_appearance.hpp"
@@ -10,6 +9,7 @@
 #include "render/wood_model.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "util/size_limits.hpp"
 
 namespace kerf {
 namespace {
@@ -176,6 +176,9 @@ BakedTexture bakePhotoTruePart(const PhotoTrueAppearance& appearance, const Wood
   const int padding = appearance.options().synthesis.patchRadius + 1;
   const UvAtlas synth = synthesisAtlas(placedMesh, atlas, appearance.synthesisPxPerMm(), padding);
   progress.throwIfCancelled();
+  // Per texel of the synthesis atlas: point, frame, region, guidance, grain tensor and colour (about 120
+  // bytes), refused at once rather than failing late.
+  checkMemoryNeed(std::uint64_t(synth.resolution) * synth.resolution * 120, "the part's photo-true texture");
   const TexelSurface surface = texelSurface(synth);
   const SurfaceGuidance guidance =
       computeTexelGuidance(model, surface, appearance.options().weights, progress.part(0.0, 0.1));
