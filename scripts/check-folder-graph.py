@@ -37,7 +37,8 @@ ALLOWED = {
     "texture": {"util", "image", "geometry", "params", "field", "material", "render", "io", "fit"},
     "appearance": {"util", "image", "geometry", "params", "field", "render", "io"},  # photo-true, beside texture
     "mesh": {"util", "image", "geometry", "render", "io"},
-    "export": {"util", "image", "geometry", "field", "render", "io", "mesh"},  # field: the ring uncertainty volume
+    # field: the ring uncertainty volume; appearance: images, depth stacks and parts in the photo-true appearance
+    "export": {"util", "image", "geometry", "field", "render", "io", "mesh", "appearance"},
     "demo": {"util", "image", "model", "material", "render", "rings", "io"},
 }
 

@@ -2,6 +2,7 @@
 // names (core/export/export_job.hpp, docs/export.md).
 #include <cstdio>
 
+#include "appearance/photo_true_source.hpp"
 #include "command.hpp"
 #include "export/export_job.hpp"
 #include "io/project.hpp"
@@ -15,7 +16,8 @@ Command addExportCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "export", "Export a face or cut image (" + extensionWords(ExportKind::Image) + "), a volume (" +
                     extensionWords(ExportKind::Volume) + "), a depth stack (folder) or a textured part (" +
-                    extensionWords(ExportKind::Part) + " with --mesh)");
+                    extensionWords(ExportKind::Part) +
+                    " with --mesh), in the project's appearance (a colour volume is always procedural)");
   struct Options {
     std::string document, out, face, plane, layer = "colour", exrType = "half", quantity = "growth",
                                             depthStack, mesh, place, rotate;
@@ -102,6 +104,7 @@ Command addExportCommand(CLI::App& app) {
             const WoodModel model(project);
             if (const RingUncertainty* sure = project.currentRingUncertainty())
               request.ringUncertainty = *sure;
+            request.photoTrue = photoTrueSourceOf(project);
             const ExportSummary summary = runExport(model, request, context.progress());
             context.samples = summary.samples;
             std::printf("%s\n", summary.message.c_str());

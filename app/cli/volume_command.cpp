@@ -22,7 +22,8 @@ Command addExportVolumeCommand(CLI::App& app) {
   volume->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   volume
       ->add_option("--quantity", o->quantity,
-                   "growth (float years), color (uint8 RGB) or ring-uncertainty (float mm: how sure the fit "
+                   "growth (float years), color (uint8 RGB, the procedural model's) or ring-uncertainty "
+                   "(float mm: how sure the fit "
                    "is, 1 sigma; from `fit --uncertainty N`)")
       ->check(CLI::IsMember({"growth", "color", "ring-uncertainty"}));
   cli::addNumber(volume, "--res", o->resolution, "Samples along the block's longest side", 1, 4096);
@@ -37,6 +38,9 @@ Command addExportVolumeCommand(CLI::App& app) {
             std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
                         o->out.c_str(), result.size.x, result.size.y, result.size.z, result.spacingMm.x,
                         result.bytes / 1048576.0);
+            const std::string warning = volumeAppearanceWarning(volumeQuantityFromName(o->quantity),
+                                                                project.appearance == Appearance::Photo);
+            if (!warning.empty()) std::fprintf(stderr, "kerf-cli: warning: %s\n", warning.c_str());
           }};
 }
 

@@ -10,6 +10,7 @@
 #include <QStandardPaths>
 #include <algorithm>
 
+#include "appearance/photo_true_source.hpp"
 #include "document.hpp"
 #include "job_runner.hpp"
 #include "part_export_dialog.hpp"
@@ -76,6 +77,7 @@ PartExportDialog* ExportController::showPartExportDialog() {
 int ExportController::startExport(ExportRequest request) {
   const auto model = document_->model();
   if (const RingUncertainty* sure = document_->ringUncertainty()) request.ringUncertainty = *sure;
+  request.photoTrue = photoTrueSourceOf(document_->project());  // its photos are read on the job
   const QString path = QString::fromStdString(request.out.string());
   const int id = jobs_->start(
       tr("Exporting %1").arg(QFileInfo(path).fileName()),
@@ -102,10 +104,13 @@ void ExportController::exportFaces() {
   if (folder.isEmpty()) return;
   const auto model = document_->model();
   const float pxPerMm = settings_.pxPerMm * 2;
+  const std::optional<PhotoTrueSource> photoTrue = photoTrueSourceOf(document_->project());
   jobs_->start(
       tr("Exporting faces"),
-      [model, folder, pxPerMm](const Progress& progress, const JobRunner::Preview&) -> QVariant {
-        const auto images = kerf::renderFaces(*model, pxPerMm, 2, progress);
+      [model, folder, pxPerMm, photoTrue](const Progress& progress, const JobRunner::Preview&) -> QVariant {
+        const auto images = photoTrue ? makePhotoTrueAppearance(*model, *photoTrue, progress.part(0.0, 0.05))
+                                            ->renderFaces(pxPerMm, progress.part(0.05, 1.0))
+                                      : kerf::renderFaces(*model, pxPerMm, 2, progress);
         for (FaceId face : kAllFaces) {
           writeImage((QDir(folder).filePath(QString("%1.png").arg(QChar(faceLetter(face))))).toStdString(),
                      images[faceIndex(face)]);

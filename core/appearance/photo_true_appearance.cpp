@@ -193,12 +193,43 @@ Image PhotoTrueAppearance::renderCut(const CutPlane& plane, float pxPerMm, const
   return out;
 }
 
+Image PhotoTrueAppearance::renderGrid(const SurfaceGrid& grid, std::uint32_t salt,
+                                      const Progress& progress) const {
+  checkImageSize({grid.width, grid.height}, "the image of the surface");
+  // The same rectangle at the photos' resolution: its corner, pixel (-0.5, -0.5), stays where it is.
+  const glm::vec2 mm(grid.width * glm::length(grid.right), grid.height * glm::length(grid.down));
+  SurfaceGrid synth = grid;
+  synth.width = std::max(1, static_cast<int>(std::lround(mm.x * pxPerMm_)));
+  synth.height = std::max(1, static_cast<int>(std::lround(mm.y * pxPerMm_)));
+  synth.right = grid.right * (float(grid.width) / synth.width);
+  synth.down = grid.down * (float(grid.height) / synth.height);
+  synth.origin = grid.point(-0.5f, -0.5f) + 0.5f * (synth.right + synth.down);
+  const SurfaceGuidance guidance = computeGuidance(model_, synth, options_.weights, progress.part(0.0, 0.1));
+  const Image synthesised = renderGuidance(guidance, salt, progress.part(0.1, 1.0));
+  if (synth.width == grid.width && synth.height == grid.height) return synthesised;
+  Image out(grid.width, grid.height, 3);
+  resampleInto(synthesised, {float(synth.width) / grid.width, float(synth.height) / grid.height}, out);
+  return out;
+}
+
+Image PhotoTrueAppearance::renderGuidance(const SurfaceGuidance& guidance, std::uint32_t salt,
+                                          const Progress& progress) const {
+  GuidedSynthesisOptions synthesis = options_.synthesis;
+  synthesis.seed = mixSeed(options_.synthesis.seed, salt);
+  return synthesizeGuided(exemplars_, guidance, synthesis, progress);
+}
+
 std::array<Image, 6> loadAppearancePhotos(const Project& project) {
+  return loadAppearancePhotos(project.facePhotos, project.heldOutFaces);
+}
+
+std::array<Image, 6> loadAppearancePhotos(const std::array<std::filesystem::path, 6>& facePhotos,
+                                          const FaceSet& heldOut) {
   std::array<Image, 6> photos;
   int count = 0;
   for (FaceId face : kAllFaces) {
-    const std::filesystem::path& file = project.facePhotos[faceIndex(face)];
-    if (file.empty() || project.heldOutFaces.contains(face)) continue;
+    const std::filesystem::path& file = facePhotos[faceIndex(face)];
+    if (file.empty() || heldOut.contains(face)) continue;
     if (!std::filesystem::exists(file))
       throw InputError("the photo of face " + std::string(1, faceLetter(face)) +
                        " is missing: " + file.string());
@@ -207,7 +238,7 @@ std::array<Image, 6> loadAppearancePhotos(const Project& project) {
   }
   if (count == 0)
     throw InputError(
-        project.heldOutFaces.empty()
+        heldOut.empty()
             ? "the project has no face photos: the photo-true appearance is made from them"
             : "the project has no face photos besides its held-out faces: the photo-true appearance "
               "is made from them");

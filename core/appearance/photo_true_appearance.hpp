@@ -21,10 +21,13 @@
 // Held-out faces (Project::heldOutFaces, leave-one-face-out): their photos are never exemplars, even
 // when they are passed in.
 #include <array>
+#include <cstdint>
+#include <filesystem>
 #include <vector>
 
 #include "appearance/guidance_features.hpp"
 #include "appearance/guided_synthesis.hpp"
+#include "appearance/surface_grid.hpp"
 #include "geometry/cut_plane.hpp"
 #include "geometry/face_set.hpp"
 #include "io/image.hpp"
@@ -55,6 +58,15 @@ class PhotoTrueAppearance {
   Image renderFace(FaceId face, glm::ivec2 size, const Progress& progress = {}) const;
   std::array<Image, 6> renderFaces(float pxPerMm, const Progress& progress = {}) const;
   Image renderCut(const CutPlane& plane, float pxPerMm, const Progress& progress = {}) const;
+  // Any flat surface given as a grid at any resolution (a face pushed into the block for a depth stack):
+  // synthesised at the photos' resolution over the grid's rectangle and resampled to the grid's pixels,
+  // RGB. `salt` is mixed into the seed: one per surface, so that each has its own patches.
+  Image renderGrid(const SurfaceGrid& grid, std::uint32_t salt, const Progress& progress = {}) const;
+  // Any surface whose guidance is already computed at synthesisPxPerMm() (a part's texture atlas,
+  // appearance/texel_guidance.hpp), RGB at the guidance's size.
+  Image renderGuidance(const SurfaceGuidance& guidance, std::uint32_t salt,
+                       const Progress& progress = {}) const;
+  const PhotoTrueOptions& options() const { return options_; }
 
  private:
   const WoodModel& model_;
@@ -67,5 +79,8 @@ class PhotoTrueAppearance {
 // The project's face photos (Project::facePhotos) without its held-out faces. InputError naming the file
 // when a photo is missing or unreadable, or when the project has no photo to take the appearance from.
 std::array<Image, 6> loadAppearancePhotos(const Project& project);
+// The same from the photos' files (A..F, empty where a face has none) and the held-out faces.
+std::array<Image, 6> loadAppearancePhotos(const std::array<std::filesystem::path, 6>& facePhotos,
+                                          const FaceSet& heldOut);
 
 }  // namespace kerf

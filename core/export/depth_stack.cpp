@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 
+#include "appearance/photo_true_appearance.hpp"
+#include "appearance/surface_grid.hpp"
 #include "io/atomic_file.hpp"
 #include "util/error.hpp"
 #include "util/number_list.hpp"
@@ -17,6 +20,18 @@ namespace {
 float thicknessBehind(const Block& block, FaceId face) {
   const glm::vec3 n = glm::abs(block.face(face).normal);
   return glm::dot(n, block.size());
+}
+
+// The photo-true colour of the face pushed `depthMm` into the block: its own seed for each face and depth.
+Image photoTrueAtDepth(const PhotoTrueAppearance& appearance, const Block& block, FaceId face, float depthMm,
+                       glm::ivec2 size, const Progress& progress) {
+  if (depthMm == 0.0f) return appearance.renderFace(face, size, progress);
+  SurfaceGrid grid = faceGrid(block, face, size);
+  grid.origin -= block.face(face).normal * depthMm;
+  std::uint32_t bits;
+  std::memcpy(&bits, &depthMm, sizeof bits);
+  return appearance.renderGrid(grid, bits ^ (0x51ED27u + 0x9E3779B1u * std::uint32_t(faceIndex(face))),
+                               progress);
 }
 
 }  // namespace
@@ -37,7 +52,7 @@ DepthStackOptions parseDepthStack(const std::string& text) {
 }
 
 LayeredImage renderFaceAtDepth(const WoodModel& model, FaceId face, float depthMm, float pxPerMm, int samples,
-                               const Progress& progress) {
+                               const Progress& progress, const PhotoTrueAppearance* photoTrue) {
   if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
     throw InputError("pixels per mm must be a positive number");
   if (samples < 1 || samples > 8) throw InputError("samples per pixel side must be 1..8");
@@ -57,11 +72,16 @@ LayeredImage renderFaceAtDepth(const WoodModel& model, FaceId face, float depthM
   out.colour = Image(size.x, size.y, 3);
   out.growth = Image(size.x, size.y, 1);
   out.rings = Image(size.x, size.y, 1);
+  out.photoTrue = photoTrue != nullptr;
+  if (photoTrue)
+    out.colour = photoTrueAtDepth(*photoTrue, block, face, depthMm, size, progress.part(0.0, 0.9));
   const float weight = 1.0f / (samples * samples);
   parallelRows(
       size.y,
       [&](int y) {
         for (int x = 0; x < size.x; ++x) {
+          out.growth.pixel(x, y)[0] = model.material().year(block.pixelCenter(face, x, y, size) + inward);
+          if (photoTrue) continue;
           glm::vec3 sum(0.0f);
           for (int sy = 0; sy < samples; ++sy)
             for (int sx = 0; sx < samples; ++sx) {
@@ -70,16 +90,16 @@ LayeredImage renderFaceAtDepth(const WoodModel& model, FaceId face, float depthM
             }
           float* c = out.colour.pixel(x, y);
           c[0] = sum.x * weight, c[1] = sum.y * weight, c[2] = sum.z * weight;
-          out.growth.pixel(x, y)[0] = model.material().year(block.pixelCenter(face, x, y, size) + inward);
         }
       },
-      progress);
+      photoTrue ? progress.part(0.9, 1.0) : progress);
   addRingLines(model, out);
   return out;
 }
 
 DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOptions& options,
-                                  const std::filesystem::path& folder, const Progress& progress) {
+                                  const std::filesystem::path& folder, const Progress& progress,
+                                  const PhotoTrueAppearance* photoTrue) {
   if (!(options.stepMm > 0.0f)) throw InputError("the depth step must be more than 0 mm");
   if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder))
     throw InputError("cannot write the depth stack into " + folder.string() + ": it is a file, not a folder");
@@ -119,7 +139,7 @@ DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOption
       std::snprintf(name, sizeof name, "%c_%03d.png", faceLetter(options.face), i);
       const LayeredImage image =
           renderFaceAtDepth(model, options.face, result.depthsMm[i], options.pxPerMm, options.samples,
-                            progress.part(double(i) / count, double(i + 1) / count));
+                            progress.part(double(i) / count, double(i + 1) / count), photoTrue);
       writeLayeredImage(folder / name, image, write);
       result.files.push_back(folder / name);
       csv << i << "," << name << "," << result.depthsMm[i] << "\n";

@@ -25,9 +25,11 @@ struct DepthStackOptions {
 DepthStackOptions parseDepthStack(const std::string& text);
 
 // The surface at `depthMm` below the face (layers as renderFaceLayers, no tint). Throws InputError when
-// the depth is negative or reaches through the block.
+// the depth is negative or reaches through the block. With `photoTrue` the colour is the photo-true
+// appearance's: at depth 0 the face's own (renderFace), deeper each surface synthesised on its own (the
+// rings, grain and heart/sap follow the field from image to image; single pores do not continue).
 LayeredImage renderFaceAtDepth(const WoodModel& model, FaceId face, float depthMm, float pxPerMm, int samples,
-                               const Progress& progress = {});
+                               const Progress& progress = {}, const PhotoTrueAppearance* photoTrue = nullptr);
 
 struct DepthStackResult {
   std::vector<float> depthsMm;
@@ -37,6 +39,7 @@ struct DepthStackResult {
 
 // Creates the folder if needed; each file is written atomically, the index last.
 DepthStackResult exportDepthStack(const WoodModel& model, const DepthStackOptions& options,
-                                  const std::filesystem::path& folder, const Progress& progress = {});
+                                  const std::filesystem::path& folder, const Progress& progress = {},
+                                  const PhotoTrueAppearance* photoTrue = nullptr);
 
 }  // namespace kerf

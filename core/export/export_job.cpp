@@ -15,18 +15,40 @@ std::string sizeText(int width, int height, float pxPerMm) {
   return s.str();
 }
 
-ExportSummary runPartExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {
+// " (photo-true)" after what was written, when it shows the photo-true appearance.
+std::string appearanceNote(const PhotoTrueAppearance* photoTrue) {
+  return photoTrue ? " in the photo-true appearance" : "";
+}
+
+// Whether the export writes colours (the photo-true appearance is made only then: it takes seconds).
+bool writesColour(const ExportRequest& request, ExportKind kind) {
+  switch (kind) {
+    case ExportKind::Image:
+      return exportFormatOf(request.out)->format != ExportFormat::Png ||
+             request.image.pngLayer == ImageLayer::Colour;
+    case ExportKind::DepthStack:
+      return request.image.pngLayer == ImageLayer::Colour;
+    case ExportKind::Part:
+      return true;
+    case ExportKind::Volume:
+      return false;  // a volume is the procedural model's (see the warning below)
+  }
+  return false;
+}
+
+ExportSummary runPartExport(const WoodModel& model, const ExportRequest& request, const Progress& progress,
+                            const PhotoTrueAppearance* photoTrue) {
   PartExportOptions options = request.part;
   options.samples = request.samples;  // --samples, as for images
-  const PartExportResult result = exportPart(model, options, request.out, progress);
+  const PartExportResult result = exportPart(model, options, request.out, progress, photoTrue);
   ExportSummary summary;
   summary.kind = ExportKind::Part;
   summary.samples = result.samples;
   std::ostringstream s;
   s.precision(4);
-  s << "part written to " << request.out.string() << " (" << result.triangles << " triangles in "
-    << result.charts << " charts, " << request.part.textureResolution << " px texture, " << result.texelsPerMm
-    << " texels/mm";
+  s << "part written to " << request.out.string() << appearanceNote(photoTrue) << " (" << result.triangles
+    << " triangles in " << result.charts << " charts, " << request.part.textureResolution << " px texture, "
+    << result.texelsPerMm << " texels/mm";
   if (result.files.size() > 1)
     s << "; with " << result.files[1].filename().string() << " and " << result.files[2].filename().string();
   s << "); " << result.fit.describe();
@@ -65,24 +87,31 @@ ExportKind exportKindOf(const ExportRequest& request) {
   return format->kind;
 }
 
-ExportSummary runExport(const WoodModel& model, const ExportRequest& request, const Progress& progress) {
+ExportSummary runExport(const WoodModel& model, const ExportRequest& request, const Progress& wholeProgress) {
   ExportSummary summary;
   summary.kind = exportKindOf(request);
   const std::string out = request.out.string();
+  std::unique_ptr<PhotoTrueAppearance> appearance;
+  if (request.photoTrue && writesColour(request, summary.kind))
+    appearance = makePhotoTrueAppearance(model, *request.photoTrue, wholeProgress.part(0.0, 0.05));
+  const PhotoTrueAppearance* photoTrue = appearance.get();
+  const Progress progress = photoTrue ? wholeProgress.part(0.05, 1.0) : wholeProgress;
   switch (summary.kind) {
     case ExportKind::Image: {
-      const LayeredImage image = request.face ? renderFaceLayers(model, *request.face, request.pxPerMm,
-                                                                 request.samples, progress.part(0, 0.95))
-                                              : renderCutLayers(model, *request.plane, request.pxPerMm,
-                                                                request.samples, progress.part(0, 0.95));
+      const LayeredImage image = request.face
+                                     ? renderFaceLayers(model, *request.face, request.pxPerMm,
+                                                        request.samples, progress.part(0, 0.95), photoTrue)
+                                     : renderCutLayers(model, *request.plane, request.pxPerMm,
+                                                       request.samples, progress.part(0, 0.95), photoTrue);
       writeLayeredImage(request.out, image, request.image);
       progress.set(1.0);
       const std::size_t pixels = static_cast<std::size_t>(image.colour.width) * image.colour.height;
-      summary.samples = pixels * (request.samples * request.samples + 1);
+      // Model evaluations: the colour's supersamples (none for the photo-true colour) and the growth.
+      summary.samples = pixels * ((photoTrue ? 0 : request.samples * request.samples) + 1);
       summary.message =
           std::string(request.face ? "face " + std::string(1, faceLetter(*request.face)) : "cut") +
-          " written to " + out + " (" + sizeText(image.colour.width, image.colour.height, request.pxPerMm) +
-          ")";
+          " written to " + out + appearanceNote(photoTrue) + " (" +
+          sizeText(image.colour.width, image.colour.height, request.pxPerMm) + ")";
       return summary;
     }
     case ExportKind::Volume: {
@@ -96,6 +125,7 @@ ExportSummary runExport(const WoodModel& model, const ExportRequest& request, co
         << result.size.z << " samples, " << result.spacingMm.x << " mm spacing, " << result.bytes / 1048576.0
         << " MiB)";
       summary.message = s.str();
+      summary.warning = volumeAppearanceWarning(request.quantity, request.photoTrue.has_value());
       return summary;
     }
     case ExportKind::DepthStack: {
@@ -103,20 +133,20 @@ ExportSummary runExport(const WoodModel& model, const ExportRequest& request, co
       options.pxPerMm = request.pxPerMm;
       options.samples = request.samples;
       options.layer = request.image.pngLayer;
-      const DepthStackResult result = exportDepthStack(model, options, request.out, progress);
+      const DepthStackResult result = exportDepthStack(model, options, request.out, progress, photoTrue);
       const glm::ivec2 size = model.block().faceImageSize(options.face, options.pxPerMm);
       summary.samples = result.files.size() * static_cast<std::size_t>(size.x) * size.y *
                         (options.samples * options.samples + 1);
       std::ostringstream s;
       s.precision(4);
-      s << "depth stack written to " << out << " (" << result.files.size() << " images of face "
-        << faceLetter(options.face) << ", 0 to " << result.depthsMm.back() << " mm, "
+      s << "depth stack written to " << out << appearanceNote(photoTrue) << " (" << result.files.size()
+        << " images of face " << faceLetter(options.face) << ", 0 to " << result.depthsMm.back() << " mm, "
         << sizeText(size.x, size.y, options.pxPerMm) << "; index depths.csv)";
       summary.message = s.str();
       return summary;
     }
     case ExportKind::Part:
-      return runPartExport(model, request, progress);
+      return runPartExport(model, request, progress, photoTrue);
   }
   return summary;
 }

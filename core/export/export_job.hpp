@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "appearance/photo_true_source.hpp"
 #include "export/depth_stack.hpp"
 #include "export/export_formats.hpp"
 #include "export/image_export.hpp"
@@ -36,6 +37,10 @@ struct ExportRequest {
   std::optional<DepthStackOptions> depthStack;
   // Parts (.obj, .glb): the mesh, its placement and the texture resolution (supersampling: `samples`).
   PartExportOptions part;
+  // The project's photo-true appearance (photoTrueSourceOf(project); issue 17), none when procedural.
+  // Images, depth stacks and parts then show its colours (the photos are read when the export runs);
+  // a colour volume stays the procedural model's, with a warning (docs/export.md).
+  std::optional<PhotoTrueSource> photoTrue;
 };
 
 // The kind `request` asks for. Throws InputError for an unknown extension, an image without a face or

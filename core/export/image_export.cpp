@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "appearance/photo_true_appearance.hpp"
 #include "export/export_formats.hpp"
 #include "io/atomic_file.hpp"
 #include "io/oiio_module.hpp"
@@ -64,6 +65,15 @@ Image interleave(std::initializer_list<const Image*> parts) {
   return out;
 }
 
+// Whose colours the image shows: the procedural model's or the photo-true appearance's (issue 17); in the
+// description too, as TIFF keeps no custom attribute.
+std::string appearanceText(const LayeredImage& image) {
+  return image.photoTrue ? "photo-true" : "procedural";
+}
+std::string colourName(const LayeredImage& image) {
+  return image.photoTrue ? "colour (photo-true)" : "colour";
+}
+
 std::string floatText(float value) {
   std::ostringstream s;
   s.precision(9);
@@ -101,7 +111,9 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
   PngWriteOptions options;
   options.bits = growth ? 16 : 8;
   options.pxPerMm = image.pxPerMm;
-  std::string description = "Kerf " + imageLayerName(layer) + ", " + scaleText(image.pxPerMm);
+  const bool colour = layer == ImageLayer::Colour;
+  std::string description =
+      "Kerf " + (colour ? colourName(image) : imageLayerName(layer)) + ", " + scaleText(image.pxPerMm);
   std::string growthRange;
   if (growth) {  // 16-bit grey over the image's growth range (inside the block)
     float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
@@ -124,6 +136,7 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
                   {"Kerf:px_per_mm", floatText(image.pxPerMm)},
                   {"Kerf:mm_per_pixel", floatText(1.0f / image.pxPerMm)},
                   {"Kerf:layer", imageLayerName(layer)}};
+  if (colour) options.text.push_back({"Kerf:appearance", appearanceText(image)});
   if (growth) options.text.push_back({"Kerf:growth_range", growthRange});
   writePngFile(temporary, pixels, options, path);
 }
@@ -131,7 +144,8 @@ void writePng(const std::filesystem::path& path, const std::filesystem::path& te
 void writeTiff(const std::filesystem::path& path, const std::filesystem::path& temporary,
                const LayeredImage& image, bool extraLayers) {
   std::vector<OiioPage> pages{page(image.colour, "uint16", {})};
-  setScale(pages[0], image.pxPerMm, "Kerf colour, " + scaleText(image.pxPerMm));
+  setScale(pages[0], image.pxPerMm, "Kerf " + colourName(image) + ", " + scaleText(image.pxPerMm));
+  pages[0].textAttributes.push_back({"Kerf:appearance", appearanceText(image)});
   if (image.colour.channels == 4) pages[0].intAttributes.push_back({"oiio:UnassociatedAlpha", 1});  // as PNG
   if (extraLayers) {
     OiioPage growth = page(image.growth, "float", {"growth"});
@@ -167,9 +181,11 @@ void writeExr(const std::filesystem::path& path, const std::filesystem::path& te
     exr.channelTypes.push_back(colourType);
   }
   setScale(exr, image.pxPerMm,
-           "Kerf colour (linear)" + std::string(options.extraLayers ? ", growth (years), rings" : "") + ", " +
+           "Kerf " + colourName(image) + " (linear)" +
+               std::string(options.extraLayers ? ", growth (years), rings" : "") + ", " +
                scaleText(image.pxPerMm));
   exr.textAttributes.push_back({"compression", "zip"});
+  exr.textAttributes.push_back({"Kerf:appearance", appearanceText(image)});
   writeWithOiio(path, temporary, {exr});
 }
 
@@ -222,14 +238,16 @@ std::string imageLayerName(ImageLayer layer) {
 }
 
 LayeredImage renderFaceLayers(const WoodModel& model, FaceId face, float pxPerMm, int samples,
-                              const Progress& progress) {
+                              const Progress& progress, const PhotoTrueAppearance* photoTrue) {
   if (!(pxPerMm > 0.0f) || !std::isfinite(pxPerMm))
     throw InputError("pixels per mm must be a positive number");
   LayeredImage out;
   out.pxPerMm = pxPerMm;
   const glm::ivec2 size = model.block().faceImageSize(face, pxPerMm);
   checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)), pxPerMm);
-  out.colour = renderFace(model, face, size, samples, progress.part(0.0, 0.8));
+  out.photoTrue = photoTrue != nullptr;
+  out.colour = photoTrue ? photoTrue->renderFace(face, size, progress.part(0.0, 0.8))
+                         : renderFace(model, face, size, samples, progress.part(0.0, 0.8));
   fillGrowth(
       model, out, [&](int x, int y) { return model.block().pixelCenter(face, x, y, size); },
       progress.part(0.8, 1.0));
@@ -238,10 +256,12 @@ LayeredImage renderFaceLayers(const WoodModel& model, FaceId face, float pxPerMm
 }
 
 LayeredImage renderCutLayers(const WoodModel& model, const CutPlane& plane, float pxPerMm, int samples,
-                             const Progress& progress) {
+                             const Progress& progress, const PhotoTrueAppearance* photoTrue) {
   LayeredImage out;
   out.pxPerMm = pxPerMm;
-  out.colour = renderCut(model, plane, pxPerMm, samples, progress.part(0.0, 0.8));
+  out.photoTrue = photoTrue != nullptr;
+  out.colour = photoTrue ? photoTrue->renderCut(plane, pxPerMm, progress.part(0.0, 0.8))
+                         : renderCut(model, plane, pxPerMm, samples, progress.part(0.0, 0.8));
   const PlaneRect bounds = *plane.boundsInBlock(model.block());  // renderCut threw if there were none
   fillGrowth(
       model, out,

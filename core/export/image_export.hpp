@@ -20,6 +20,8 @@
 
 namespace kerf {
 
+class PhotoTrueAppearance;
+
 enum class ImageLayer { Colour, Growth, Rings };
 ImageLayer imageLayerFromName(std::string_view name);  // colour|color|growth|rings; InputError otherwise
 std::string imageLayerName(ImageLayer layer);
@@ -31,14 +33,17 @@ struct LayeredImage {
   Image growth;  // 1 channel: growth time in years at each pixel centre (WoodMaterial::year)
   Image rings;   // 1 channel in [0, 1]: anti-aliased lines about 1.5 px wide on the ring levels
   float pxPerMm = 1.0f;
+  bool photoTrue = false;  // the colour is the photo-true appearance's (written as Kerf:appearance)
 };
 
 // Face images are sized as Block::faceImageSize; the colour carries the face's photo tint, as render-faces.
+// With `photoTrue` the colour is its renderFace / renderCut (samples apply to the procedural colour only);
+// growth and rings are the field's either way.
 LayeredImage renderFaceLayers(const WoodModel& model, FaceId face, float pxPerMm, int samples,
-                              const Progress& progress = {});
+                              const Progress& progress = {}, const PhotoTrueAppearance* photoTrue = nullptr);
 // Throws InputError when the plane misses the block (as renderCut).
 LayeredImage renderCutLayers(const WoodModel& model, const CutPlane& plane, float pxPerMm, int samples,
-                             const Progress& progress = {});
+                             const Progress& progress = {}, const PhotoTrueAppearance* photoTrue = nullptr);
 
 // Fills image.rings from image.growth (same size): lines on the model's ring levels (growth.ring_offset + k),
 // and zeroes growth and rings where the colour's alpha is 0.

@@ -2,6 +2,7 @@
 
 #include "export/export_formats.hpp"
 #include "export/part_writers.hpp"
+#include "export/photo_true_part_bake.hpp"
 #include "mesh/bake_part_texture.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "mesh/uv_atlas.hpp"
@@ -11,7 +12,8 @@
 namespace kerf {
 
 PartExportResult exportPart(const WoodModel& model, const PartExportOptions& options,
-                            const std::filesystem::path& out, const Progress& progress) {
+                            const std::filesystem::path& out, const Progress& progress,
+                            const PhotoTrueAppearance* photoTrue) {
   const ExportFormatInfo format = requireExportFormat(out, ExportKind::Part, "a textured part");
   if (options.mesh.empty())
     throw InputError("a part export (" + std::string(format.extensions[0]) +
@@ -37,7 +39,10 @@ PartExportResult exportPart(const WoodModel& model, const PartExportOptions& opt
   atlasOptions.resolution = options.textureResolution;
   const UvAtlas atlas = buildUvAtlas(placed, atlasOptions);
   progress.set(0.05);
-  const BakedTexture baked = bakePartTexture(model, atlas, options.samples, progress.part(0.05, 0.9));
+  const BakedTexture baked =
+      photoTrue
+          ? bakePhotoTruePart(*photoTrue, model, placed, atlas, options.samples, progress.part(0.05, 0.9))
+          : bakePartTexture(model, atlas, options.samples, progress.part(0.05, 0.9));
   if (format.format == ExportFormat::Obj) {
     result.files = writePartObj(out, atlas.mesh, baked.image);
   } else {
@@ -49,6 +54,7 @@ PartExportResult exportPart(const WoodModel& model, const PartExportOptions& opt
   result.charts = atlas.charts.size();
   result.samples = baked.samples;
   result.texelsPerMm = atlas.texelsPerMm;
+  result.photoTrue = photoTrue != nullptr;
   return result;
 }
 

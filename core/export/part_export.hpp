@@ -13,6 +13,7 @@
 
 namespace kerf {
 
+class PhotoTrueAppearance;
 class WoodModel;
 
 struct PartExportOptions {
@@ -31,10 +32,13 @@ struct PartExportResult {
   MeshTopology topology;  // open edges are allowed (a surface can be baked) but worth a warning
   std::size_t triangles = 0, charts = 0, samples = 0;
   float texelsPerMm = 0;
+  bool photoTrue = false;  // baked from the photo-true appearance
 };
 
-// out: .obj or .glb. Throws InputError (naming the mesh file), Cancelled.
+// out: .obj or .glb. Throws InputError (naming the mesh file), Cancelled. With `photoTrue` the texture is
+// its appearance (export/photo_true_part_bake.hpp), else the procedural model's.
 PartExportResult exportPart(const WoodModel& model, const PartExportOptions& options,
-                            const std::filesystem::path& out, const Progress& progress = {});
+                            const std::filesystem::path& out, const Progress& progress = {},
+                            const PhotoTrueAppearance* photoTrue = nullptr);
 
 }  // namespace kerf

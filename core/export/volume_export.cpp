@@ -22,6 +22,12 @@ VolumeQuantity volumeQuantityFromName(std::string_view name) {
                    "\" (use growth, color or ring-uncertainty)");
 }
 
+std::string volumeAppearanceWarning(VolumeQuantity quantity, bool photoTrueProject) {
+  if (quantity != VolumeQuantity::Color || !photoTrueProject) return {};
+  return "the colour volume is the procedural model's: the project's photo-true appearance makes surfaces, "
+         "not volumes (docs/export.md)";
+}
+
 namespace {
 
 // A volume is written slice by slice (NRRD, raw) or kept whole until written (OpenVDB): refuse at once
@@ -107,6 +113,7 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
     layout.components = 3;
     layout.comment = "Kerf wood colour (sRGB-encoded 8-bit) in the block frame";
     layout.keyValues.emplace_back("quantity", "color");
+    layout.keyValues.emplace_back("appearance", "procedural");  // never photo-true: volumeAppearanceWarning
   }
 
   const bool floatSamples = growth || sure;

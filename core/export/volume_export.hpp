@@ -3,6 +3,7 @@
 // the path's extension, computed one z slice at a time. A NRRD is streamed to disk, so a 512^3 volume
 // needs memory for one slice; a VDB grid is held in memory until it is written (docs/export.md).
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "field/ring_uncertainty.hpp"
@@ -20,6 +21,12 @@ enum class VolumeQuantity {
 };
 // "growth" | "color" | "ring-uncertainty"; InputError otherwise
 VolumeQuantity volumeQuantityFromName(std::string_view name);
+
+// A colour volume is always the procedural model's: the photo-true appearance (issue 17) makes surfaces,
+// one at a time, and a volume synthesised slice by slice would be slow and its pores would not continue
+// from slice to slice (docs/export.md, "Colour volumes"). What to tell the user of a photo-true project
+// whose colour volume they asked for; empty when there is nothing to tell.
+std::string volumeAppearanceWarning(VolumeQuantity quantity, bool photoTrueProject);
 
 struct VolumeExportResult {
   glm::ivec3 size{0};

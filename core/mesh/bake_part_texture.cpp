@@ -113,14 +113,36 @@ void dilate(Image& image, std::vector<char>& filled, int rounds) {
 
 }  // namespace
 
+std::vector<int> atlasTexelOwners(const UvAtlas& atlas) {
+  std::vector<int> owner(std::size_t(atlas.resolution) * atlas.resolution, -1);
+  rasterize(atlas, false, owner);
+  rasterize(atlas, true, owner);
+  return owner;
+}
+
+glm::vec3 atlasBarycentric(const UvAtlas& atlas, int triangle, glm::vec2 texelPoint) {
+  return barycentric(texelTriangle(atlas, triangle), texelPoint);
+}
+
 BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, int samples,
                              const Progress& progress) {
+  return bakeAtlasTexture(
+      atlas,
+      [&](int t, glm::vec3 w) {
+        const glm::uvec3 corners = atlas.mesh.triangles[t];
+        const glm::vec3 p = w.x * atlas.mesh.positions[corners.x] + w.y * atlas.mesh.positions[corners.y] +
+                            w.z * atlas.mesh.positions[corners.z];
+        return model.evaluate(p).color;
+      },
+      samples, progress);
+}
+
+BakedTexture bakeAtlasTexture(const UvAtlas& atlas, const AtlasColour& colourAt, int samples,
+                              const Progress& progress) {
   if (samples < 1 || samples > 8) throw InputError("samples per texel side must be 1 to 8");
   const int side = atlas.resolution;
   BakedTexture baked;
-  baked.owner.assign(std::size_t(side) * side, -1);
-  rasterize(atlas, false, baked.owner);
-  rasterize(atlas, true, baked.owner);
+  baked.owner = atlasTexelOwners(atlas);
   progress.throwIfCancelled();
   progress.set(0.05);
 
@@ -132,17 +154,11 @@ BakedTexture bakePartTexture(const WoodModel& model, const UvAtlas& atlas, int s
           const int t = baked.owner[std::size_t(y) * side + x];
           if (t < 0) continue;
           const TexelTriangle tri = texelTriangle(atlas, t);
-          const glm::uvec3 corners = atlas.mesh.triangles[t];
           glm::vec3 c(0.0f);
           for (int sy = 0; sy < samples; ++sy)
-            for (int sx = 0; sx < samples; ++sx) {
-              const glm::vec3 w =
-                  barycentric(tri, glm::vec2(x + (sx + 0.5f) / samples, y + (sy + 0.5f) / samples));
-              const glm::vec3 p = w.x * atlas.mesh.positions[corners.x] +
-                                  w.y * atlas.mesh.positions[corners.y] +
-                                  w.z * atlas.mesh.positions[corners.z];
-              c += model.evaluate(p).color;
-            }
+            for (int sx = 0; sx < samples; ++sx)
+              c += colourAt(
+                  t, barycentric(tri, glm::vec2(x + (sx + 0.5f) / samples, y + (sy + 0.5f) / samples)));
           c /= float(samples * samples);
           float* out = baked.image.pixel(x, y);
           out[0] = c.x, out[1] = c.y, out[2] = c.z;

@@ -210,9 +210,14 @@ UvAtlas buildUvAtlas(const Mesh& mesh, const UvAtlasOptions& options) {
     throw InputError("mesh " + mesh.name + " has " + std::to_string(charts.size()) +
                      " separate pieces, too many for a " + std::to_string(side) +
                      " px texture; raise the texture resolution");
-  for (int i = 0; i < 40; ++i) {
-    const float mid = 0.5f * (low + high);
-    (shelfPack(charts, order, mid, padding, side, nullptr) ? low : high) = mid;
+  if (options.maxTexelsPerMm > 0.0f &&
+      shelfPack(charts, order, options.maxTexelsPerMm, padding, side, nullptr)) {
+    low = options.maxTexelsPerMm;
+  } else {
+    for (int i = 0; i < 40; ++i) {
+      const float mid = 0.5f * (low + high);
+      (shelfPack(charts, order, mid, padding, side, nullptr) ? low : high) = mid;
+    }
   }
   std::vector<glm::ivec2> origins;
   shelfPack(charts, order, low, padding, side, &origins);

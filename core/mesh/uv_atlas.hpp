@@ -26,6 +26,9 @@ namespace kerf {
 struct UvAtlasOptions {
   int resolution = 1024;  // the square texture's side in texels
   int padding = -1;       // gutter texels on each side of a chart; -1: max(2, resolution / 256)
+  // > 0: charts no denser than this (texels per mm), even where more would fit: a bake that must work at a
+  // given scale (the photo-true appearance synthesises at the photos' pixels per mm).
+  float maxTexelsPerMm = 0.0f;
 };
 
 struct UvAtlas {
