@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "appearance/photo_true_appearance.hpp"
+#include "appearance/photo_true_source.hpp"
 #include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_controller.hpp"
@@ -15,7 +16,7 @@
 namespace kerf {
 
 // The photos' guidance on one model: what every photo-true surface of that model is made from.
-struct PhotoTrueSource {
+struct PhotoTrueSurfaces {
   std::shared_ptr<const WoodModel> model;
   std::unique_ptr<const PhotoTrueAppearance> appearance;  // refers to *model
 };
@@ -23,25 +24,26 @@ struct PhotoTrueSource {
 namespace {
 
 struct FacesUpdate {
-  std::shared_ptr<const PhotoTrueSource> source;
+  std::shared_ptr<const PhotoTrueSurfaces> source;
   std::array<QImage, 6> faces;  // null where not made yet
 };
 
-std::shared_ptr<const PhotoTrueSource> makeSource(std::shared_ptr<const WoodModel> model,
-                                                  const std::array<QImage, 6>& photos, const FaceSet& heldOut,
-                                                  const Progress& progress) {
+std::shared_ptr<const PhotoTrueSurfaces> makeSource(std::shared_ptr<const WoodModel> model,
+                                                    const std::array<QImage, 6>& photos,
+                                                    const FaceSet& heldOut, const Progress& progress) {
   std::array<Image, 6> images;
   for (int i = 0; i < 6; ++i)
     if (!heldOut.contains(kAllFaces[i])) images[i] = fromQImage(photos[i]);
-  auto source = std::make_shared<PhotoTrueSource>();
+  auto source = std::make_shared<PhotoTrueSurfaces>();
   source->model = std::move(model);
-  source->appearance = std::make_unique<const PhotoTrueAppearance>(*source->model, images, heldOut,
-                                                                   PhotoTrueOptions{}, progress);
+  // The model's seed, as kerf-cli's render-faces, render-cut and export: the same surfaces everywhere.
+  source->appearance = std::make_unique<const PhotoTrueAppearance>(
+      *source->model, images, heldOut, photoTrueOptionsFor(*source->model), progress);
   return source;
 }
 
 // The cut at the photos' own resolution (they hold no finer detail; the panel scales it).
-CutAppearance makeCut(const PhotoTrueSource& source, const CutPlaneSetting& setting,
+CutAppearance makeCut(const PhotoTrueSurfaces& source, const CutPlaneSetting& setting,
                       const Progress& progress) {
   const CutPlane plane = setting.plane();
   const float pxPerMm = source.appearance->synthesisPxPerMm();

@@ -24,7 +24,7 @@ namespace kerf {
 class CutView;
 class FacesController;
 class Viewport3D;
-struct PhotoTrueSource;
+struct PhotoTrueSurfaces;
 
 class AppearanceController : public EditorController {
   Q_OBJECT
@@ -60,7 +60,7 @@ class AppearanceController : public EditorController {
   Viewport3D* viewport_;
   QAction* photoTrueAction_;
   QTimer settle_, cutSettle_;
-  std::shared_ptr<const PhotoTrueSource> source_;  // of the document's model, once made
+  std::shared_ptr<const PhotoTrueSurfaces> source_;  // of the document's model, once made
   int facesJob_ = 0, cutJob_ = 0;
   std::list<CutAppearance> cuts_;  // the latest first
   static constexpr std::size_t kKeptCuts = 6;

@@ -9,6 +9,7 @@
 #include <QMenu>
 #include <QtTest>
 
+#include "appearance/photo_true_source.hpp"
 #include "appearance_controller.hpp"
 #include "cut_view.hpp"
 #include "demo_window.hpp"
@@ -16,6 +17,7 @@
 #include "faces_controller.hpp"
 #include "faces_view.hpp"
 #include "params/parameter_schema.hpp"
+#include "qt_image.hpp"
 #include "viewport3d.hpp"
 #include "window_grab.hpp"
 #include "work_path.hpp"
@@ -124,6 +126,13 @@ void TestPhotoTrueView::everyViewShowsThePhotoTrueSurfaces() {
   waitUntilMade();
   QVERIFY(window_->faces()->showsAppearanceFaces());
   QVERIFY(facesAreGreen());
+  // The same surfaces as kerf-cli's render-faces and export of the saved project (the model's seed).
+  const auto model = window_->document()->model();
+  const QImage shownA = window_->facesView()->renderings()[faceIndex(FaceId::A)];
+  const QImage cliA =
+      toQImage(makePhotoTrueAppearance(*model, *photoTrueSourceOf(window_->document()->project()))
+                   ->renderFace(FaceId::A, {shownA.width(), shownA.height()}));
+  QCOMPARE(shownA.convertToFormat(QImage::Format_RGB888), cliA.convertToFormat(QImage::Format_RGB888));
   QVERIFY(window_->cutView()->showsCutAppearance());
   QVERIFY(greenOverRed(window_->cutView()->grabFramebuffer()) > 1.5);
   window_->viewport()->refineNow();
