@@ -144,8 +144,14 @@ Image PhotoTrueAppearance::renderFace(FaceId face, glm::ivec2 size, const Progre
   checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)));
   const Block& block = model_.block();
   const glm::ivec2 synthSize = block.faceImageSize(face, pxPerMm_);
+  // A photographed face's guidance is the one its exemplar already has (the same grid).
+  const auto exemplar = std::find(faces_.begin(), faces_.end(), face);
+  const bool known = exemplar != faces_.end() &&
+                     exemplars_[exemplar - faces_.begin()].guidance.width == synthSize.x &&
+                     exemplars_[exemplar - faces_.begin()].guidance.height == synthSize.y;
   const SurfaceGuidance guidance =
-      computeGuidance(model_, faceGrid(block, face, synthSize), options_.weights, progress.part(0.0, 0.1));
+      known ? exemplars_[exemplar - faces_.begin()].guidance
+            : computeGuidance(model_, faceGrid(block, face, synthSize), options_.weights, progress.part(0.0, 0.1));
   GuidedSynthesisOptions synthesis = options_.synthesis;
   synthesis.seed = mixSeed(options_.synthesis.seed, 101u + faceIndex(face));
   const Image synthesised = synthesizeGuided(exemplars_, guidance, synthesis, progress.part(0.1, 1.0));
