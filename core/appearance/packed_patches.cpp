@@ -69,7 +69,8 @@ PatchSamples::PatchSamples(int radius, int step, int phases) : phases_(phases) {
       for (int px = 0; px < phases; ++px) {
         // The phase's centre: where in its pixel the patch centre is taken to be.
         const float fx = (px + 0.5f) / phases, fy = (py + 0.5f) / phases;
-        std::int8_t* out = &turned_[((static_cast<std::size_t>(bin) * phases + py) * phases + px) * count() * 2];
+        std::int8_t* out =
+            &turned_[((static_cast<std::size_t>(bin) * phases + py) * phases + px) * count() * 2];
         for (int k = 0; k < count(); ++k) {
           out[2 * k] = static_cast<std::int8_t>(std::floor(fx + c * dx_[k] + s * dy_[k] + 0.5f));
           out[2 * k + 1] = static_cast<std::int8_t>(std::floor(fy - s * dx_[k] + c * dy_[k] + 0.5f));
@@ -80,7 +81,8 @@ PatchSamples::PatchSamples(int radius, int step, int phases) : phases_(phases) {
 
 std::vector<int> PatchSamples::offsets(const PackedImage& image) const {
   std::vector<int> out(dx_.size());
-  for (int k = 0; k < count(); ++k) out[k] = static_cast<int>(image.index(dx_[k], dy_[k]) - image.index(0, 0));
+  for (int k = 0; k < count(); ++k)
+    out[k] = static_cast<int>(image.index(dx_[k], dy_[k]) - image.index(0, 0));
   return out;
 }
 

@@ -149,9 +149,9 @@ Image PhotoTrueAppearance::renderFace(FaceId face, glm::ivec2 size, const Progre
   const bool known = exemplar != faces_.end() &&
                      exemplars_[exemplar - faces_.begin()].guidance.width == synthSize.x &&
                      exemplars_[exemplar - faces_.begin()].guidance.height == synthSize.y;
-  const SurfaceGuidance guidance =
-      known ? exemplars_[exemplar - faces_.begin()].guidance
-            : computeGuidance(model_, faceGrid(block, face, synthSize), options_.weights, progress.part(0.0, 0.1));
+  const SurfaceGuidance guidance = known ? exemplars_[exemplar - faces_.begin()].guidance
+                                         : computeGuidance(model_, faceGrid(block, face, synthSize),
+                                                           options_.weights, progress.part(0.0, 0.1));
   GuidedSynthesisOptions synthesis = options_.synthesis;
   synthesis.seed = mixSeed(options_.synthesis.seed, 101u + faceIndex(face));
   const Image synthesised = synthesizeGuided(exemplars_, guidance, synthesis, progress.part(0.1, 1.0));

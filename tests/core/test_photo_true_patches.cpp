@@ -62,8 +62,10 @@ TEST(PhotoTruePatchDistance, SameSumAsAPlainLoop) {
         const float bounded = patchDistanceFor(chunks, first == 0)(
             target.at(px, py), offsets.data(), exemplar.at(ix, iy), turned, exemplar.rowPixels * chunks,
             samples.count(), samples.perRow(), bound);
-        if (reference < bound) EXPECT_NEAR(bounded, reference, 1e-4 * reference);
-        else EXPECT_GE(bounded, bound);
+        if (reference < bound)
+          EXPECT_NEAR(bounded, reference, 1e-4 * reference);
+        else
+          EXPECT_GE(bounded, bound);
       }
     }
   }
