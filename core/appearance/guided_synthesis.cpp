@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "appearance/exemplar_pyramids.hpp"
 #include "appearance/packed_patches.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -13,27 +14,6 @@ namespace kerf {
 namespace {
 
 constexpr int kColour = 3;
-
-// An exemplar at one pyramid level: its packed colour and features, its colours as they are (what the vote
-// copies), its grain angle bins, and where patch centres
-// may lie in it (so that a patch turned any way stays inside the photo and away from its damaged border).
-struct ExemplarLevel {
-  int w = 0, h = 0;
-  PackedImage packed;
-  std::vector<float> colour;
-  std::vector<std::uint8_t> angle;
-  float minX = 0, maxX = 0, minY = 0, maxY = 0;
-  bool usable() const { return maxX > minX && maxY > minY; }
-};
-
-// The target at one level: packed features (padded by a patch radius: no sample is clamped) and colour
-// estimate, the colour estimate as it is, the grain angle bins.
-struct TargetLevel {
-  int w = 0, h = 0;
-  PackedImage packed;
-  std::vector<float> colour;
-  std::vector<std::uint8_t> angle;
-};
 
 // The nearest-neighbour field's entry: exemplar, position, rotation (the angle bin that turns the
 // exemplar's grain onto the target's) and the patch distance.
@@ -57,68 +37,6 @@ Random lineRandom(std::uint32_t seed, int level, int pass, int sweep, int line) 
   return r;
 }
 
-std::vector<std::uint8_t> angleBins(const std::vector<float>& radians) {
-  std::vector<std::uint8_t> out(radians.size());
-  std::transform(radians.begin(), radians.end(), out.begin(), angleBin);
-  return out;
-}
-
-// The guidance channels that are not zero everywhere (a zero channel adds nothing to any distance).
-std::vector<int> keptChannels(const std::vector<Exemplar>& exemplars, const SurfaceGuidance& target) {
-  std::vector<int> kept;
-  for (int c = 0; c < kGuidanceChannels; ++c) {
-    bool used = false;
-    auto scan = [&](const SurfaceGuidance& g) {
-      for (std::size_t i = c; i < g.features.size() && !used; i += kGuidanceChannels)
-        used = g.features[i] != 0.0f;
-    };
-    scan(target);
-    for (const Exemplar& e : exemplars) scan(e.guidance);
-    if (used) kept.push_back(c);
-  }
-  return kept;
-}
-
-ExemplarLevel exemplarLevel(const Image& colour, const SurfaceGuidance& g, const std::vector<int>& kept,
-                            float colourWeight) {
-  ExemplarLevel e;
-  e.w = g.width;
-  e.h = g.height;
-  e.packed = PackedImage(g.width, g.height, 0, packedChunks(static_cast<int>(kept.size())));
-  e.packed.setColours(colour.pixels.data(), colourWeight);
-  e.packed.setFeatures(g.features.data(), kGuidanceChannels, kept);
-  e.colour = colour.pixels;
-  e.angle = angleBins(g.grainAngle);
-  return e;
-}
-
-TargetLevel targetLevel(const SurfaceGuidance& g, const std::vector<int>& kept, int radius) {
-  TargetLevel t;
-  t.w = g.width;
-  t.h = g.height;
-  t.packed = PackedImage(g.width, g.height, radius, packedChunks(static_cast<int>(kept.size())));
-  t.packed.setFeatures(g.features.data(), kGuidanceChannels, kept);
-  t.packed.fillPad();
-  t.colour.assign(static_cast<std::size_t>(g.width) * g.height * kColour, 0.0f);
-  t.angle = angleBins(g.grainAngle);
-  return t;
-}
-
-Image halveImage(const Image& image) {
-  Image out(std::max(1, image.width / 2), std::max(1, image.height / 2), image.channels);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      for (int c = 0; c < image.channels; ++c) {
-        float sum = 0;
-        for (int dy = 0; dy < 2; ++dy)
-          for (int dx = 0; dx < 2; ++dx)
-            sum +=
-                image.pixel(std::min(2 * x + dx, image.width - 1), std::min(2 * y + dy, image.height - 1))[c];
-        out.pixel(x, y)[c] = 0.25f * sum;
-      }
-  return out;
-}
-
 // Every other row and column of the patch in the distance: a third of the work for patches of 11 x 11,
 // and still every feature band and pore row of the patch is seen.
 int distanceStep(int radius) {
@@ -133,8 +51,10 @@ constexpr int kSubPixelPhases = 4;
 class Synthesis {
  public:
   Synthesis(const std::vector<ExemplarLevel>& exemplars, TargetLevel& target,
-            const GuidedSynthesisOptions& options, const PatchSamples& samples, int level, bool coarsest)
+            const GuidedSynthesisOptions& options, const PatchSamples& samples, float scale, int level,
+            bool coarsest)
       : ex_(exemplars),
+        scale_(scale),
         t_(target),
         o_(options),
         level_(level),
@@ -259,7 +179,7 @@ class Synthesis {
 
  private:
   void updatePackedColours() {
-    t_.packed.setColours(t_.colour.data(), o_.colourWeight);
+    t_.packed.setColours(t_.colour.data(), o_.colourWeight, scale_);
     t_.packed.fillPad();
   }
 
@@ -284,6 +204,14 @@ class Synthesis {
     if (!(qx >= e.minX && qx <= e.maxX && qy >= e.minY && qy <= e.maxY)) return false;
     int ix, iy;
     const int phaseX = samples_.phase(qx, ix), phaseY = samples_.phase(qy, iy);
+    // The best's own pixel and phase (propagation in coherent regions proposes it again and again): the
+    // same distance, which would not be taken.
+    if (ei == best.e && best.cost < std::numeric_limits<float>::max()) {
+      int bx, by;
+      if (samples_.phase(best.x, bx) == phaseX && samples_.phase(best.y, by) == phaseY && bx == ix &&
+          by == iy)
+        return false;
+    }
     const std::uint8_t bin = static_cast<std::uint8_t>(t_.angle[static_cast<std::size_t>(py) * t_.w + px] -
                                                        e.angle[static_cast<std::size_t>(iy) * e.w + ix]);
     const float d = distance_(t_.packed.at(px, py), targetOffsets_.data(), e.packed.at(ix, iy),
@@ -330,6 +258,7 @@ class Synthesis {
   }
 
   const std::vector<ExemplarLevel>& ex_;
+  float scale_;
   TargetLevel& t_;
   const GuidedSynthesisOptions& o_;
   int level_, r_;
@@ -343,61 +272,22 @@ class Synthesis {
   std::vector<Match> nnf_;
 };
 
-}  // namespace
-
-Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuidance& target,
-                       const GuidedSynthesisOptions& options, const Progress& progress) {
-  if (exemplars.empty()) throw InputError("photo-true appearance: no photo to take the texture from");
-  if (options.patchRadius < 1 || options.levels < 1 || options.passes < 1)
-    throw InputError("photo-true appearance: patch radius, levels and passes must be at least 1");
-  const int r = options.patchRadius;
-  const PatchSamples samples(r, distanceStep(r), kSubPixelPhases);
-  const std::vector<int> kept = keptChannels(exemplars, target);
-  // The pyramids; a level is used only while every exemplar still has room for turned patches.
-  std::vector<std::vector<ExemplarLevel>> exLevels;
-  std::vector<SurfaceGuidance> exGuidance;
-  std::vector<Image> exColour;
-  for (const Exemplar& e : exemplars) {
-    if (e.colour.width != e.guidance.width || e.colour.height != e.guidance.height)
-      throw InputError("photo-true appearance: a photo and its guidance differ in size");
-    exGuidance.push_back(e.guidance);
-    exColour.push_back(e.colour);
-  }
-  std::vector<SurfaceGuidance> targetLevels{target};
-  for (int level = 0; level < options.levels; ++level) {
-    std::vector<ExemplarLevel> these;
-    // Beyond the farthest a turned sample reaches from the patch centre: no sample needs clamping.
-    const float reach = std::ceil(r * std::sqrt(2.0f)) + 1.0f;
-    bool usable = true;
-    for (std::size_t i = 0; i < exemplars.size(); ++i) {
-      ExemplarLevel e = exemplarLevel(exColour[i], exGuidance[i], kept, options.colourWeight);
-      const float margin = std::ceil(float(exemplars[i].marginPx) / float(1 << level)) + reach;
-      e.minX = margin, e.minY = margin, e.maxX = e.w - 1 - margin, e.maxY = e.h - 1 - margin;
-      usable = usable && e.usable();
-      these.push_back(std::move(e));
-    }
-    if (!usable) {
-      if (level == 0) throw InputError("photo-true appearance: a photo is too small for the patches");
-      break;
-    }
-    exLevels.push_back(std::move(these));
-    if (level + 1 < options.levels) {
-      for (std::size_t i = 0; i < exemplars.size(); ++i) {
-        exGuidance[i] = halveGuidance(exGuidance[i]);
-        exColour[i] = halveImage(exColour[i]);
-      }
-      targetLevels.push_back(halveGuidance(targetLevels.back()));
-    }
-  }
-  const int levels = static_cast<int>(exLevels.size());
+// Coarse to fine over the prepared levels (the target's as many).
+Image synthesize(const PreparedExemplars& prepared, std::vector<TargetLevel> targets,
+                 const GuidedSynthesisOptions& options, const Progress& progress) {
+  if (options.patchRadius != prepared.patchRadius || options.colourWeight != prepared.colourWeight ||
+      options.levels < static_cast<int>(prepared.levels.size()))
+    throw InputError("photo-true appearance: the photos were prepared with other synthesis options");
+  if (options.passes < 1) throw InputError("photo-true appearance: passes must be at least 1");
+  const PatchSamples samples(options.patchRadius, distanceStep(options.patchRadius), kSubPixelPhases);
+  const int levels = static_cast<int>(prepared.levels.size());
   const int totalPasses = levels * options.passes;
   std::vector<Match> coarse;
   int coarseW = 0, coarseH = 0;
-  std::vector<float> result;
   for (int level = levels - 1; level >= 0; --level) {
-    TargetLevel t = targetLevel(targetLevels[level], kept, r);
+    TargetLevel& t = targets[level];
     const bool coarsest = level == levels - 1;
-    Synthesis synthesis(exLevels[level], t, options, samples, level, coarsest);
+    Synthesis synthesis(prepared.levels[level], t, options, samples, prepared.scale, level, coarsest);
     if (coarsest) {
       synthesis.initialiseRandom();
     } else {
@@ -406,10 +296,10 @@ Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuid
     }
     for (int pass = 0; pass < options.passes; ++pass) {
       progress.throwIfCancelled();
-      // The coarsest level's first pass has no colour estimate yet: the guidance alone.
       // The last pass's colours are used by nothing: the next level votes its own from the field carried
       // down, and the finest level's final colours are its matches' own (sharpFinal).
       const bool last = pass + 1 == options.passes;
+      // The coarsest level's first pass has no colour estimate yet: the guidance alone.
       synthesis.pass(pass, !(coarsest && pass == 0) && options.colourWeight > 0.0f,
                      !last || (level == 0 && !options.sharpFinal));
       const int done = (levels - 1 - level) * options.passes + pass + 1;
@@ -421,11 +311,27 @@ Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuid
     if (level == 0 && options.sharpFinal) synthesis.copyMatches();
     coarse = std::move(synthesis.field());
     coarseW = t.w, coarseH = t.h;
-    if (level == 0) result = std::move(t.colour);
   }
-  Image out(target.width, target.height, 3);
-  out.pixels = std::move(result);
+  Image out(targets[0].w, targets[0].h, 3);
+  out.pixels = std::move(targets[0].colour);
   return out;
+}
+
+}  // namespace
+
+Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuidance& target,
+                       const GuidedSynthesisOptions& options, const Progress& progress) {
+  return synthesizeGuided(*prepareExemplars(exemplars, options), target, options, progress);
+}
+
+Image synthesizeGuided(const PreparedExemplars& exemplars, const SurfaceGuidance& target,
+                       const GuidedSynthesisOptions& options, const Progress& progress) {
+  return synthesize(exemplars, targetLevels(exemplars, target), options, progress);
+}
+
+Image synthesizeGuided(const PreparedExemplars& exemplars, int index, const GuidedSynthesisOptions& options,
+                       const Progress& progress) {
+  return synthesize(exemplars, targetLevels(exemplars, index), options, progress);
 }
 
 }  // namespace kerf

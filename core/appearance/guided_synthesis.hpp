@@ -19,6 +19,7 @@
 // and reads only its own line of the field, with random numbers drawn from (seed, level, pass, line), so the
 // result does not depend on the number of threads: deterministic for a seed.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "appearance/guidance_features.hpp"
@@ -47,5 +48,16 @@ struct GuidedSynthesisOptions {
 // with exemplars too small for the patches. Cancellable.
 Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuidance& target,
                        const GuidedSynthesisOptions& options, const Progress& progress = {});
+
+// The exemplars made ready for the synthesis (appearance/exemplar_pyramids.hpp) once, for many surfaces
+// synthesised with the same levels, patch radius and colour weight (InputError as synthesizeGuided).
+struct PreparedExemplars;
+std::shared_ptr<const PreparedExemplars> prepareExemplars(const std::vector<Exemplar>& exemplars,
+                                                          const GuidedSynthesisOptions& options);
+Image synthesizeGuided(const PreparedExemplars& exemplars, const SurfaceGuidance& target,
+                       const GuidedSynthesisOptions& options, const Progress& progress = {});
+// Exemplar `index`'s own surface (the guidance it was prepared with), made from all the exemplars.
+Image synthesizeGuided(const PreparedExemplars& exemplars, int index, const GuidedSynthesisOptions& options,
+                       const Progress& progress = {});
 
 }  // namespace kerf

@@ -21,37 +21,60 @@ float binAngle(int bin) {
   return kTwoPi * static_cast<float>(bin) / kAngleBins;
 }
 
-PackedImage::PackedImage(int width_, int height_, int pad_, int chunks_)
-    : width(width_), height(height_), pad(pad_), chunks(chunks_), rowPixels(width_ + 2 * pad_) {
-  data.assign(static_cast<std::size_t>(rowPixels) * (height + 2 * pad) * chunks, Float4{0, 0, 0, 0});
+namespace {
+
+void store(Float4& lanes, int lane, float value) {
+  lanes[lane] = value;
 }
 
-void PackedImage::setColours(const float* rgb, float weight) {
+void store(Short4& lanes, int lane, float value) {
+  lanes[lane] = static_cast<std::int16_t>(std::clamp(std::lround(value), -32767L, 32767L));
+}
+
+}  // namespace
+
+template <class Lanes>
+PackedImage<Lanes>::PackedImage(int width_, int height_, int pad_, int chunks_)
+    : width(width_), height(height_), pad(pad_), chunks(chunks_), rowPixels(width_ + 2 * pad_) {
+  data.assign(static_cast<std::size_t>(rowPixels) * (height + 2 * pad) * chunks, Lanes{0, 0, 0, 0});
+}
+
+template <class Lanes>
+void PackedImage<Lanes>::setColours(const float* rgb, float weight, float scale) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const float* c = rgb + (static_cast<std::size_t>(y) * width + x) * 3;
-      *at(x, y) = Float4{weight * c[0], weight * c[1], weight * c[2], 0.0f};
+      Lanes& lanes = *at(x, y);
+      for (int i = 0; i < 3; ++i) store(lanes, i, weight * scale * c[i]);
+      store(lanes, 3, 0.0f);
     }
 }
 
-void PackedImage::setFeatures(const float* features, int stride, const std::vector<int>& kept) {
+template <class Lanes>
+void PackedImage<Lanes>::setFeatures(const float* features, int stride, const std::vector<int>& kept,
+                                     float scale) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const float* f = features + (static_cast<std::size_t>(y) * width + x) * stride;
-      float* out = reinterpret_cast<float*>(at(x, y) + 1);
-      for (std::size_t i = 0; i < kept.size(); ++i) out[i] = f[kept[i]];
+      Lanes* out = at(x, y) + 1;
+      for (std::size_t i = 0; i < kept.size(); ++i)
+        store(out[i / 4], static_cast<int>(i % 4), scale * f[kept[i]]);
     }
 }
 
-void PackedImage::fillPad() {
+template <class Lanes>
+void PackedImage<Lanes>::fillPad() {
   if (pad == 0) return;
   for (int y = -pad; y < height + pad; ++y)
     for (int x = -pad; x < width + pad; ++x) {
       if (x >= 0 && x < width && y >= 0 && y < height) continue;
-      const Float4* from = at(std::clamp(x, 0, width - 1), std::clamp(y, 0, height - 1));
+      const Lanes* from = at(std::clamp(x, 0, width - 1), std::clamp(y, 0, height - 1));
       std::copy_n(from, chunks, at(x, y));
     }
 }
+
+template struct PackedImage<Float4>;
+template struct PackedImage<Short4>;
 
 PatchSamples::PatchSamples(int radius, int step, int phases) : phases_(phases) {
   for (int dy = -radius; dy <= radius; dy += step)
@@ -79,7 +102,7 @@ PatchSamples::PatchSamples(int radius, int step, int phases) : phases_(phases) {
   }
 }
 
-std::vector<int> PatchSamples::offsets(const PackedImage& image) const {
+std::vector<int> PatchSamples::offsets(const PackedImage<Float4>& image) const {
   std::vector<int> out(dx_.size());
   for (int k = 0; k < count(); ++k)
     out[k] = static_cast<int>(image.index(dx_[k], dy_[k]) - image.index(0, 0));

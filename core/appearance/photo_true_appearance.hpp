@@ -21,6 +21,7 @@
 // Held-out faces (Project::heldOutFaces, leave-one-face-out): their photos are never exemplars, even
 // when they are passed in.
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "appearance/guidance_features.hpp"
@@ -61,7 +62,8 @@ class PhotoTrueAppearance {
   PhotoTrueOptions options_;
   float pxPerMm_ = 0;
   std::vector<FaceId> faces_;
-  std::vector<Exemplar> exemplars_;
+  // The photos and their guidance, packed once for every surface (appearance/exemplar_pyramids.hpp).
+  std::shared_ptr<const PreparedExemplars> exemplars_;
 };
 
 // The project's face photos (Project::facePhotos) without its held-out faces. InputError naming the file

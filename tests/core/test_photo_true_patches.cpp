@@ -15,20 +15,29 @@ namespace {
 
 constexpr int kRadius = 5, kStep = 2, kPhases = 4;
 
-PackedImage randomImage(int w, int h, int pad, int chunks, SplitMix& random) {
-  PackedImage image(w, h, pad, chunks);
+// Values as the fixed point holds them: up to 2 (a weighted feature) in steps of 1/4096.
+PackedImage<Float4> randomTarget(int w, int h, int pad, int chunks, SplitMix& random) {
+  PackedImage<Float4> image(w, h, pad, chunks);
   for (Float4& v : image.data)
-    for (int i = 0; i < 4; ++i) v[i] = random.uniform() * 2.0f - 1.0f;
+    for (int i = 0; i < 4; ++i) v[i] = (random.uniform() * 2.0f - 1.0f) * 8192.0f;
+  return image;
+}
+
+PackedImage<Short4> randomExemplar(int w, int h, int chunks, SplitMix& random) {
+  PackedImage<Short4> image(w, h, 0, chunks);
+  for (Short4& v : image.data)
+    for (int i = 0; i < 4; ++i) v[i] = static_cast<std::int16_t>(random.below(16385) - 8192);
   return image;
 }
 
 // The plain sum over every sample and chunk, in double, at the samples the table gives.
-double referenceDistance(const PackedImage& target, int px, int py, const PackedImage& exemplar, int ix,
-                         int iy, const PatchSamples& samples, const std::int8_t* turned, int first) {
+double referenceDistance(const PackedImage<Float4>& target, int px, int py,
+                         const PackedImage<Short4>& exemplar, int ix, int iy, const PatchSamples& samples,
+                         const std::int8_t* turned, int first) {
   double sum = 0.0;
   for (int k = 0; k < samples.count(); ++k) {
     const Float4* a = target.at(px + samples.dx(k), py + samples.dy(k));
-    const Float4* b = exemplar.at(ix + turned[2 * k], iy + turned[2 * k + 1]);
+    const Short4* b = exemplar.at(ix + turned[2 * k], iy + turned[2 * k + 1]);
     for (int c = first; c < target.chunks; ++c)
       for (int i = 0; i < 4; ++i) sum += double(a[c][i] - b[c][i]) * double(a[c][i] - b[c][i]);
   }
@@ -41,8 +50,8 @@ TEST(PhotoTruePatchDistance, SameSumAsAPlainLoop) {
   SplitMix random{11};
   const PatchSamples samples(kRadius, kStep, kPhases);
   for (int chunks : {2, 3, 4}) {
-    const PackedImage target = randomImage(30, 20, kRadius, chunks, random);
-    const PackedImage exemplar = randomImage(40, 40, 0, chunks, random);
+    const PackedImage<Float4> target = randomTarget(30, 20, kRadius, chunks, random);
+    const PackedImage<Short4> exemplar = randomExemplar(40, 40, chunks, random);
     for (int trial = 0; trial < 200; ++trial) {
       const int px = random.below(30), py = random.below(20);
       const float qx = 10.0f + 20.0f * random.uniform(), qy = 10.0f + 20.0f * random.uniform();
