@@ -81,8 +81,13 @@ TargetLevel emptyTarget(int w, int h, int chunks, int radius) {
 
 }  // namespace
 
-std::shared_ptr<const PreparedExemplars> prepareExemplars(const std::vector<Exemplar>& exemplars,
-                                                          const GuidedSynthesisOptions& options) {
+namespace {
+
+// Exemplar by exemplar, all its levels (the finest reads it as it is, coarser ones halve it); with
+// `release`, each exemplar's guidance and colour are freed once packed (the peak memory of a project with
+// large photos).
+std::shared_ptr<const PreparedExemplars> prepare(std::vector<Exemplar>& exemplars,
+                                                 const GuidedSynthesisOptions& options, bool release) {
   if (exemplars.empty()) throw InputError("photo-true appearance: no photo to take the texture from");
   if (options.patchRadius < 1 || options.levels < 1 || options.passes < 1)
     throw InputError("photo-true appearance: patch radius, levels and passes must be at least 1");
@@ -96,34 +101,50 @@ std::shared_ptr<const PreparedExemplars> prepareExemplars(const std::vector<Exem
   p->kept = keptChannels(exemplars);
   p->chunks = packedChunks(static_cast<int>(p->kept.size()));
   p->scale = fixedPointScale(exemplars, p->kept, options.colourWeight);
-  // A level is used only while every exemplar still has room for turned patches. The finest level reads
-  // the exemplars as they are; coarser ones halve them.
-  std::vector<SurfaceGuidance> halvedGuidance(exemplars.size());
-  std::vector<Image> halvedColour(exemplars.size());
-  for (int level = 0; level < options.levels; ++level) {
-    std::vector<ExemplarLevel> these;
-    // Beyond the farthest a turned sample reaches from the patch centre: no sample needs clamping.
-    const float reach = std::ceil(r * std::sqrt(2.0f)) + 1.0f;
-    bool usable = true;
-    for (std::size_t i = 0; i < exemplars.size(); ++i) {
+  // Beyond the farthest a turned sample reaches from the patch centre: no sample needs clamping.
+  const float reach = std::ceil(r * std::sqrt(2.0f)) + 1.0f;
+  std::vector<std::vector<ExemplarLevel>> byExemplar(exemplars.size());
+  for (std::size_t i = 0; i < exemplars.size(); ++i) {
+    SurfaceGuidance guidance;
+    Image colour;
+    for (int level = 0; level < options.levels; ++level) {
       if (level > 0) {
-        halvedGuidance[i] = halveGuidance(level == 1 ? exemplars[i].guidance : halvedGuidance[i]);
-        halvedColour[i] = halveImage(level == 1 ? exemplars[i].colour : halvedColour[i]);
+        guidance = halveGuidance(level == 1 ? exemplars[i].guidance : guidance);
+        colour = halveImage(level == 1 ? exemplars[i].colour : colour);
       }
       ExemplarLevel e = level == 0 ? exemplarLevel(*p, exemplars[i].colour, exemplars[i].guidance)
-                                   : exemplarLevel(*p, halvedColour[i], halvedGuidance[i]);
+                                   : exemplarLevel(*p, colour, guidance);
       const float margin = std::ceil(float(exemplars[i].marginPx) / float(1 << level)) + reach;
       e.minX = margin, e.minY = margin, e.maxX = e.w - 1 - margin, e.maxY = e.h - 1 - margin;
-      usable = usable && e.usable();
-      these.push_back(std::move(e));
+      byExemplar[i].push_back(std::move(e));
     }
+    if (release) exemplars[i] = Exemplar{};
+  }
+  // A level is used only while every exemplar still has room for turned patches.
+  for (int level = 0; level < options.levels; ++level) {
+    bool usable = true;
+    for (const auto& levels : byExemplar) usable = usable && levels[level].usable();
     if (!usable) {
       if (level == 0) throw InputError("photo-true appearance: a photo is too small for the patches");
       break;
     }
-    p->levels.push_back(std::move(these));
+    p->levels.emplace_back();
+    for (auto& levels : byExemplar) p->levels.back().push_back(std::move(levels[level]));
   }
   return p;
+}
+
+}  // namespace
+
+std::shared_ptr<const PreparedExemplars> prepareExemplars(const std::vector<Exemplar>& exemplars,
+                                                          const GuidedSynthesisOptions& options) {
+  std::vector<Exemplar> copy = exemplars;
+  return prepare(copy, options, false);
+}
+
+std::shared_ptr<const PreparedExemplars> prepareExemplars(std::vector<Exemplar>&& exemplars,
+                                                          const GuidedSynthesisOptions& options) {
+  return prepare(exemplars, options, true);
 }
 
 std::vector<TargetLevel> targetLevels(const PreparedExemplars& p, const SurfaceGuidance& target) {

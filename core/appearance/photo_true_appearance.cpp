@@ -139,7 +139,7 @@ PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, const std::arra
     progress.set(double(i + 1) / faces_.size());
   }
   equaliseTints(exemplars);
-  exemplars_ = prepareExemplars(exemplars, options.synthesis);
+  exemplars_ = prepareExemplars(std::move(exemplars), options.synthesis);
 }
 
 Image PhotoTrueAppearance::renderFace(FaceId face, glm::ivec2 size, const Progress& progress) const {
