@@ -34,12 +34,19 @@ std::vector<int> keptChannels(const std::vector<Exemplar>& exemplars) {
   return kept;
 }
 
+// The colour weight, or 1 without one: the colours stay packed then too (the vote reads them there).
+float colourFactor(float colourWeight) {
+  return colourWeight > 0.0f ? colourWeight : 1.0f;
+}
+
 float fixedPointScale(const std::vector<Exemplar>& exemplars, const std::vector<int>& kept,
                       float colourWeight) {
-  float largest = std::abs(colourWeight);  // colours are within [0, 1]
-  for (const Exemplar& e : exemplars)
+  float largest = colourFactor(colourWeight);  // colours are about [0, 1]
+  for (const Exemplar& e : exemplars) {
     for (std::size_t i = 0; i < e.guidance.features.size(); i += kGuidanceChannels)
       for (int c : kept) largest = std::max(largest, std::abs(e.guidance.features[i + c]));
+    for (float v : e.colour.pixels) largest = std::max(largest, colourFactor(colourWeight) * std::abs(v));
+  }
   return largest * kFinestStep > kLargest ? kLargest / largest : kFinestStep;
 }
 
@@ -63,9 +70,8 @@ ExemplarLevel exemplarLevel(const PreparedExemplars& p, const Image& colour, con
   e.w = g.width;
   e.h = g.height;
   e.packed = PackedImage<Short4>(g.width, g.height, 0, p.chunks);
-  e.packed.setColours(colour.pixels.data(), p.colourWeight, p.scale);
+  e.packed.setColours(colour.pixels.data(), p.colourScale, 1.0f);
   e.packed.setFeatures(g.features.data(), kGuidanceChannels, p.kept, p.scale);
-  e.colour = colour.pixels;
   e.angle = angleBins(g.grainAngle);
   return e;
 }
@@ -101,6 +107,7 @@ std::shared_ptr<const PreparedExemplars> prepare(std::vector<Exemplar>& exemplar
   p->kept = keptChannels(exemplars);
   p->chunks = packedChunks(static_cast<int>(p->kept.size()));
   p->scale = fixedPointScale(exemplars, p->kept, options.colourWeight);
+  p->colourScale = colourFactor(options.colourWeight) * p->scale;
   // Beyond the farthest a turned sample reaches from the patch centre: no sample needs clamping.
   const float reach = std::ceil(r * std::sqrt(2.0f)) + 1.0f;
   std::vector<std::vector<ExemplarLevel>> byExemplar(exemplars.size());

@@ -13,13 +13,12 @@
 
 namespace kerf {
 
-// An exemplar at one pyramid level: packed colour and features, its colours as they are (what the vote
-// copies), its grain angle bins, and where patch centres may lie in it (so that a patch turned any way
-// stays inside the photo and away from its damaged border).
+// An exemplar at one pyramid level: packed colour and features (the colours the vote copies too), its
+// grain angle bins, and where patch centres may lie in it (so that a patch turned any way stays inside
+// the photo and away from its damaged border).
 struct ExemplarLevel {
   int w = 0, h = 0;
   PackedImage<Short4> packed;
-  std::vector<float> colour;
   std::vector<std::uint8_t> angle;
   float minX = 0, maxX = 0, minY = 0, maxY = 0;
   bool usable() const { return maxX > minX && maxY > minY; }
@@ -28,7 +27,8 @@ struct ExemplarLevel {
 struct PreparedExemplars {
   int patchRadius = 0;
   float colourWeight = 0;
-  float scale = 1;        // the fixed point's: packed values are the features (and colours) times it
+  float scale = 1;        // the fixed point's: packed features are the features times it
+  float colourScale = 1;  // packed colours are the colours times it (the colour weight, or 1, times scale)
   std::vector<int> kept;  // the guidance channels packed
   int chunks = 0;
   std::vector<std::vector<ExemplarLevel>> levels;  // [level][exemplar], finest first, all usable

@@ -51,10 +51,10 @@ constexpr int kSubPixelPhases = 4;
 class Synthesis {
  public:
   Synthesis(const std::vector<ExemplarLevel>& exemplars, TargetLevel& target,
-            const GuidedSynthesisOptions& options, const PatchSamples& samples, float scale, int level,
+            const GuidedSynthesisOptions& options, const PatchSamples& samples, float colourScale, int level,
             bool coarsest)
       : ex_(exemplars),
-        scale_(scale),
+        colourScale_(colourScale),
         t_(target),
         o_(options),
         level_(level),
@@ -142,25 +142,21 @@ class Synthesis {
   void vote() {
     parallelRows(t_.h, [&](int y) {
       for (int x = 0; x < t_.w; ++x) {
-        float acc[kColour] = {0, 0, 0};
+        Float4 acc = {0, 0, 0, 0};
         float weightSum = 0;
         for (int k = 0; k < voteSamples_.count(); ++k) {
           const int nx = x - voteSamples_.dx(k), ny = y - voteSamples_.dy(k);
           if (nx < 0 || ny < 0 || nx >= t_.w || ny >= t_.h) continue;
           const Match& m = nnf_[static_cast<std::size_t>(ny) * t_.w + nx];
-          const ExemplarLevel& e = ex_[m.e];
           int ix, iy;
           voteSamples_.phase(m.x, ix);
           voteSamples_.phase(m.y, iy);
           const std::int8_t* turned = voteSamples_.turned(m.bin, 0, 0) + 2 * k;
-          const float* sample =
-              &e.colour[(static_cast<std::size_t>(iy + turned[1]) * e.w + ix + turned[0]) * kColour];
-          const float w = voteWeight_[k];
-          for (int c = 0; c < kColour; ++c) acc[c] += w * sample[c];
-          weightSum += w;
+          acc += voteWeight_[k] * packedColour(ex_[m.e], ix + turned[0], iy + turned[1]);
+          weightSum += voteWeight_[k];
         }
         float* out = &t_.colour[(static_cast<std::size_t>(y) * t_.w + x) * kColour];
-        for (int c = 0; c < kColour; ++c) out[c] = acc[c] / weightSum;
+        for (int c = 0; c < kColour; ++c) out[c] = acc[c] / (weightSum * colourScale_);
       }
     });
     updatePackedColours();
@@ -179,21 +175,23 @@ class Synthesis {
 
  private:
   void updatePackedColours() {
-    t_.packed.setColours(t_.colour.data(), o_.colourWeight, scale_);
+    t_.packed.setColours(t_.colour.data(), colourScale_, 1.0f);
     t_.packed.fillPad();
   }
 
-  static void bilinearColour(const ExemplarLevel& e, float x, float y, float* out) {
+  // An exemplar pixel's colour as packed (chunk 0: times the colour scale).
+  static Float4 packedColour(const ExemplarLevel& e, int x, int y) { return toFloat4(*e.packed.at(x, y)); }
+
+  void bilinearColour(const ExemplarLevel& e, float x, float y, float* out) const {
     x = std::clamp(x, 0.0f, e.w - 1.0f);
     y = std::clamp(y, 0.0f, e.h - 1.0f);
     const int x0 = std::min(static_cast<int>(x), e.w - 2 < 0 ? 0 : e.w - 2);
     const int y0 = std::min(static_cast<int>(y), e.h - 2 < 0 ? 0 : e.h - 2);
     const int x1 = std::min(x0 + 1, e.w - 1), y1 = std::min(y0 + 1, e.h - 1);
     const float fx = x - x0, fy = y - y0;
-    auto at = [&](int px, int py) { return &e.colour[(static_cast<std::size_t>(py) * e.w + px) * kColour]; };
-    const float *a = at(x0, y0), *b = at(x1, y0), *c = at(x0, y1), *d = at(x1, y1);
-    for (int k = 0; k < kColour; ++k)
-      out[k] = (1 - fy) * ((1 - fx) * a[k] + fx * b[k]) + fy * ((1 - fx) * c[k] + fx * d[k]);
+    const Float4 c = (1 - fy) * ((1 - fx) * packedColour(e, x0, y0) + fx * packedColour(e, x1, y0)) +
+                     fy * ((1 - fx) * packedColour(e, x0, y1) + fx * packedColour(e, x1, y1));
+    for (int k = 0; k < kColour; ++k) out[k] = c[k] / colourScale_;
   }
 
   // The patch distance at target pixel (px, py) for exemplar position (qx, qy), the patch turned so that
@@ -259,7 +257,7 @@ class Synthesis {
   }
 
   const std::vector<ExemplarLevel>& ex_;
-  float scale_;
+  float colourScale_;
   TargetLevel& t_;
   const GuidedSynthesisOptions& o_;
   int level_, r_;
@@ -288,7 +286,7 @@ Image synthesize(const PreparedExemplars& prepared, std::vector<TargetLevel> tar
   for (int level = levels - 1; level >= 0; --level) {
     TargetLevel& t = targets[level];
     const bool coarsest = level == levels - 1;
-    Synthesis synthesis(prepared.levels[level], t, options, samples, prepared.scale, level, coarsest);
+    Synthesis synthesis(prepared.levels[level], t, options, samples, prepared.colourScale, level, coarsest);
     if (coarsest) {
       synthesis.initialiseRandom();
     } else {
