@@ -240,12 +240,32 @@ class Synthesis {
     // over three seeds: orient 0.54 with or without them; they are the candidates read from memory).
     const float start =
         coarsest_ ? 0.5f * std::max(e.w, e.h) : std::min(0.5f * std::max(e.w, e.h), 4.0f * r_);
-    for (float radius = start; radius >= 1.0f; radius *= 0.5f) {
-      const float qx = m.x + radius * (2 * random.uniform() - 1),
-                  qy = m.y + radius * (2 * random.uniform() - 1);
-      tryCandidate(x, y, m.e, qx, qy, m);
+    // Around the match the search started from (v0 of Barnes et al. 2009 Sec. 3.2), so that all the
+    // candidates are known at once and their pixels can be fetched from memory while the first are scored.
+    const int ei = m.e;
+    const float x0 = m.x, y0 = m.y;
+    float qx[32], qy[32];
+    int n = 0;
+    for (float radius = start; radius >= 1.0f && n < 32; radius *= 0.5f, ++n) {
+      qx[n] = x0 + radius * (2 * random.uniform() - 1);
+      qy[n] = y0 + radius * (2 * random.uniform() - 1);
+      prefetchPatch(e, qx[n], qy[n]);
     }
+    for (int i = 0; i < n; ++i) tryCandidate(x, y, ei, qx[i], qy[i], m);
     if (coarsest_) tryGlobal(x, y, m, random);
+  }
+
+  // Asks for the rows of the patch at (qx, qy) (unturned: close enough) to be brought into the cache.
+  void prefetchPatch(const ExemplarLevel& e, float qx, float qy) const {
+    if (!(qx >= e.minX && qx <= e.maxX && qy >= e.minY && qy <= e.maxY)) return;
+    const int ix = static_cast<int>(qx), iy = static_cast<int>(qy);
+    for (int dy = -r_; dy <= r_; dy += samples_.perRow() > 1 ? 2 : 1) {
+      const char* row = reinterpret_cast<const char*>(e.packed.at(ix, iy + dy));
+      const std::ptrdiff_t half = static_cast<std::ptrdiff_t>(r_) * e.packed.chunks * sizeof(Short4);
+      __builtin_prefetch(row - half);
+      __builtin_prefetch(row);
+      __builtin_prefetch(row + half);
+    }
   }
 
   // A candidate anywhere in any exemplar: lets the field move to another photo.
