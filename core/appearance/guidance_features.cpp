@@ -15,6 +15,12 @@ namespace {
 constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
 // The grain direction is that of the grain tensor averaged with a Gaussian of this sigma.
 constexpr float kGrainScaleMm = 0.8f;
+// From this many pixels per mm (2 pixels: 0.17 mm and less) the field is evaluated at every other pixel.
+// Mokume's photos (6.4 px/mm) are evaluated at every pixel.
+constexpr float kInterpolatedPxPerMm = 12.0f;
+// A Gaussian wider than this (pixels) is applied at a coarser resolution (the tensor it averages varies
+// over millimetres, and the full-resolution kernel over 1M pixels costs more than the field).
+constexpr double kLargestDirectSigma = 8.0;
 
 float smoothStep(float a, float b, float x) {
   if (b <= a) return x < a ? 0.0f : 1.0f;
@@ -41,20 +47,59 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
   std::vector<glm::vec3> fibre(n);
   const float stepMm = 0.5f / grid.pxPerMm();
   const Block& block = model.block();
+  // On fine grids the field is evaluated at every other pixel of every other row and interpolated
+  // (bilinear; the fibre renormalised): it changes over tenths of a millimetre, and its evaluation is most
+  // of the guidance's time.
+  const int step = grid.pxPerMm() >= kInterpolatedPxPerMm ? 2 : 1;
+  const int sw = (w - 1) / step + 1 + (step > 1 && (w - 1) % step != 0 ? 1 : 0);
+  const int sh = (h - 1) / step + 1 + (step > 1 && (h - 1) % step != 0 ? 1 : 0);
+  auto sampleX = [&](int sx) { return std::min(sx * step, w - 1); };
+  auto sampleY = [&](int sy) { return std::min(sy * step, h - 1); };
+  std::vector<float> sampledYear(static_cast<std::size_t>(sw) * sh), sampledAbove(sampledYear.size());
+  std::vector<glm::vec3> sampledFibre(sampledYear.size());
   parallelRows(
-      h,
-      [&](int y) {
-        for (int x = 0; x < w; ++x) {
-          const std::size_t i = static_cast<std::size_t>(y) * w + x;
-          const glm::vec3 p = grid.point(float(x), float(y));
-          const WoodSample s = model.evaluate(p, -1, true);
-          year[i] = s.year;
-          fibre[i] = s.fiberDirection;
-          yearAbove[i] = model.material().year(p + stepMm * grid.normal);
-          out.inside[i] = block.contains(p) ? 1 : 0;
+      sh,
+      [&](int sy) {
+        for (int sx = 0; sx < sw; ++sx) {
+          const std::size_t i = static_cast<std::size_t>(sy) * sw + sx;
+          const glm::vec3 p = grid.point(float(sampleX(sx)), float(sampleY(sy)));
+          // Where the point lies in the tree, without shading it (pores, rays, colour): the same year and
+          // fibre as evaluate(), at a fraction of the cost.
+          const auto location = model.material().locate(p, true);
+          sampledYear[i] = location.year;
+          sampledFibre[i] = location.fiberDirection;
+          sampledAbove[i] = model.material().year(p + stepMm * grid.normal);
         }
       },
       progress.part(0.0, 0.8));
+  parallelRows(h, [&](int y) {
+    // The samples around (x, y) and the weights of the second ones.
+    auto bracket = [&](int v, int last, auto sample, int& a, int& b, float& t) {
+      a = v / step;
+      b = std::min(a + 1, last);
+      const int from = sample(a), to = sample(b);
+      t = to > from ? float(v - from) / float(to - from) : 0.0f;
+    };
+    int y0, y1;
+    float ty;
+    bracket(y, sh - 1, sampleY, y0, y1, ty);
+    for (int x = 0; x < w; ++x) {
+      int x0, x1;
+      float tx;
+      bracket(x, sw - 1, sampleX, x0, x1, tx);
+      const std::size_t a = std::size_t(y0) * sw + x0, b = std::size_t(y0) * sw + x1;
+      const std::size_t c = std::size_t(y1) * sw + x0, d = std::size_t(y1) * sw + x1;
+      auto mix = [&](const auto& v) {
+        return (1 - ty) * ((1 - tx) * v[a] + tx * v[b]) + ty * ((1 - tx) * v[c] + tx * v[d]);
+      };
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      year[i] = mix(sampledYear);
+      yearAbove[i] = mix(sampledAbove);
+      const glm::vec3 f = mix(sampledFibre);
+      fibre[i] = step > 1 ? f / std::max(glm::length(f), 1e-9f) : f;
+      out.inside[i] = block.contains(grid.point(float(x), float(y))) ? 1 : 0;
+    }
+  });
   const glm::vec3 rightUnit = glm::normalize(grid.right), downUnit = glm::normalize(grid.down);
   const float mmRight = glm::length(grid.right), mmDown = glm::length(grid.down);
   const WoodParameters& params = model.params();
@@ -109,10 +154,20 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
   // The grain direction from the tensor averaged over about a millimetre (as a structure tensor is, and
   // as a patch sees it): the field's small wobbles turn single pixels' gradients a lot.
   const double sigma = kGrainScaleMm * grid.pxPerMm();
+  const int shrink = sigma > kLargestDirectSigma ? static_cast<int>(sigma / (0.5 * kLargestDirectSigma)) : 1;
   for (int c = 0; c < 5; ++c) {
     cv::Mat channel(h, w, CV_32F);
     for (std::size_t i = 0; i < n; ++i) channel.at<float>(static_cast<int>(i)) = tensor[i * 5 + c];
-    cv::GaussianBlur(channel, channel, cv::Size(0, 0), sigma, sigma, cv::BORDER_REFLECT);
+    if (shrink > 1) {
+      cv::Mat small;
+      cv::resize(channel, small, cv::Size(std::max(1, w / shrink), std::max(1, h / shrink)), 0, 0,
+                 cv::INTER_AREA);
+      const double smallSigma = sigma * small.cols / w;
+      cv::GaussianBlur(small, small, cv::Size(0, 0), smallSigma, smallSigma, cv::BORDER_REFLECT);
+      cv::resize(small, channel, cv::Size(w, h), 0, 0, cv::INTER_LINEAR);
+    } else {
+      cv::GaussianBlur(channel, channel, cv::Size(0, 0), sigma, sigma, cv::BORDER_REFLECT);
+    }
     for (std::size_t i = 0; i < n; ++i) tensor[i * 5 + c] = channel.at<float>(static_cast<int>(i));
   }
   parallelRows(h, [&](int y) {

@@ -14,11 +14,15 @@
 //  - the colours are then re-estimated by letting every patch vote for the pixels it covers, weighted by
 //    a Gaussian around its centre (Kwatra et al. 2005, "Texture optimization", Sec. 3: the E step and the
 //    M step alternate);
-//  - the field is carried to the next, finer level and refined there.
+//  - the field is carried to the next, finer level and refined there (propagation and a search near it:
+//    the global candidates are the coarsest level's).
+// Made fast (appearance/packed_patches.hpp, exemplar_pyramids.hpp): exemplars packed once in 16-bit fixed
+// point, patches turned through offset tables per angle bin, the distance's sum stopped past the best.
 // Rows (and, in the vertical propagation sweep, columns) run in parallel; each line is processed in order
 // and reads only its own line of the field, with random numbers drawn from (seed, level, pass, line), so the
 // result does not depend on the number of threads: deterministic for a seed.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "appearance/guidance_features.hpp"
@@ -47,5 +51,19 @@ struct GuidedSynthesisOptions {
 // with exemplars too small for the patches. Cancellable.
 Image synthesizeGuided(const std::vector<Exemplar>& exemplars, const SurfaceGuidance& target,
                        const GuidedSynthesisOptions& options, const Progress& progress = {});
+
+// The exemplars made ready for the synthesis (appearance/exemplar_pyramids.hpp) once, for many surfaces
+// synthesised with the same levels, patch radius and colour weight (InputError as synthesizeGuided).
+struct PreparedExemplars;
+std::shared_ptr<const PreparedExemplars> prepareExemplars(const std::vector<Exemplar>& exemplars,
+                                                          const GuidedSynthesisOptions& options);
+// The same, freeing each exemplar's photo and guidance as soon as it is packed (less peak memory).
+std::shared_ptr<const PreparedExemplars> prepareExemplars(std::vector<Exemplar>&& exemplars,
+                                                          const GuidedSynthesisOptions& options);
+Image synthesizeGuided(const PreparedExemplars& exemplars, const SurfaceGuidance& target,
+                       const GuidedSynthesisOptions& options, const Progress& progress = {});
+// Exemplar `index`'s own surface (the guidance it was prepared with), made from all the exemplars.
+Image synthesizeGuided(const PreparedExemplars& exemplars, int index, const GuidedSynthesisOptions& options,
+                       const Progress& progress = {});
 
 }  // namespace kerf

@@ -121,6 +121,7 @@ PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, const std::arra
   std::vector<float> sorted = densities;
   std::sort(sorted.begin(), sorted.end());
   pxPerMm_ = sorted[sorted.size() / 2];
+  std::vector<Exemplar> exemplars;
   for (std::size_t i = 0; i < faces_.size(); ++i) {
     progress.throwIfCancelled();
     const FaceId face = faces_[i];
@@ -134,21 +135,28 @@ PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, const std::arra
       resampleInto(photo, {float(photo.width) / size.x, float(photo.height) / size.y}, exemplar.colour);
     }
     exemplar.guidance = computeGuidance(model, faceGrid(block, face, size), options.weights);
-    exemplars_.push_back(std::move(exemplar));
+    exemplars.push_back(std::move(exemplar));
     progress.set(double(i + 1) / faces_.size());
   }
-  equaliseTints(exemplars_);
+  equaliseTints(exemplars);
+  exemplars_ = prepareExemplars(std::move(exemplars), options.synthesis);
 }
 
 Image PhotoTrueAppearance::renderFace(FaceId face, glm::ivec2 size, const Progress& progress) const {
   checkImageSize(size, "the image of face " + std::string(1, faceLetter(face)));
   const Block& block = model_.block();
   const glm::ivec2 synthSize = block.faceImageSize(face, pxPerMm_);
-  const SurfaceGuidance guidance =
-      computeGuidance(model_, faceGrid(block, face, synthSize), options_.weights, progress.part(0.0, 0.1));
   GuidedSynthesisOptions synthesis = options_.synthesis;
   synthesis.seed = mixSeed(options_.synthesis.seed, 101u + faceIndex(face));
-  const Image synthesised = synthesizeGuided(exemplars_, guidance, synthesis, progress.part(0.1, 1.0));
+  // A photographed face's own levels are its exemplar's (the same guidance on the same grid).
+  const auto exemplar = std::find(faces_.begin(), faces_.end(), face);
+  const Image synthesised =
+      exemplar != faces_.end()
+          ? synthesizeGuided(*exemplars_, static_cast<int>(exemplar - faces_.begin()), synthesis, progress)
+          : synthesizeGuided(*exemplars_,
+                             computeGuidance(model_, faceGrid(block, face, synthSize), options_.weights,
+                                             progress.part(0.0, 0.1)),
+                             synthesis, progress.part(0.1, 1.0));
   if (synthSize == size) return synthesised;
   Image out(size.x, size.y, 3);
   resampleInto(synthesised, {float(synthSize.x) / size.x, float(synthSize.y) / size.y}, out);
@@ -174,7 +182,7 @@ Image PhotoTrueAppearance::renderCut(const CutPlane& plane, float pxPerMm, const
   const SurfaceGuidance guidance = computeGuidance(model_, grid, options_.weights, progress.part(0.0, 0.1));
   GuidedSynthesisOptions synthesis = options_.synthesis;
   synthesis.seed = mixSeed(options_.synthesis.seed, planeSalt(plane, pxPerMm));
-  const Image synthesised = synthesizeGuided(exemplars_, guidance, synthesis, progress.part(0.1, 0.95));
+  const Image synthesised = synthesizeGuided(*exemplars_, guidance, synthesis, progress.part(0.1, 0.95));
   Image out(outGrid.width, outGrid.height, 4);
   resampleInto(synthesised, glm::vec2(pxPerMm_ / pxPerMm), out);
   // Coverage as renderCut computes it with 2 x 2 points per pixel: transparent outside the block.

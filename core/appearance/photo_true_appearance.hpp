@@ -23,6 +23,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "appearance/guidance_features.hpp"
@@ -73,7 +74,8 @@ class PhotoTrueAppearance {
   PhotoTrueOptions options_;
   float pxPerMm_ = 0;
   std::vector<FaceId> faces_;
-  std::vector<Exemplar> exemplars_;
+  // The photos and their guidance, packed once for every surface (appearance/exemplar_pyramids.hpp).
+  std::shared_ptr<const PreparedExemplars> exemplars_;
 };
 
 // The project's face photos (Project::facePhotos) without its held-out faces. InputError naming the file

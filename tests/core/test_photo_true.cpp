@@ -255,3 +255,35 @@ TEST(PhotoTrue, ProjectStoresTheAppearance) {
   bad["appearance"] = "neural";
   EXPECT_THROW(projectFromJson(bad, "."), InputError);
 }
+
+TEST(PhotoTrue, GuidanceOnFineGridsMatchesTheExactOne) {
+  // From 12 px/mm the field is evaluated at every other pixel and interpolated, and the grain tensor is
+  // averaged at a coarser resolution: halved, such a guidance must match the one evaluated at every pixel
+  // of the grid with half the resolution (the same points: halveGuidance averages 2 x 2 pixels).
+  const Synthetic& s = synthetic();
+  const SurfaceGuidance fine =
+      computeGuidance(*s.model, faceGrid(s.project.block, FaceId::A, {1024, 1024}), {});
+  const SurfaceGuidance halved = halveGuidance(halveGuidance(fine));
+  const SurfaceGuidance exact =
+      computeGuidance(*s.model, faceGrid(s.project.block, FaceId::A, {256, 256}), {});
+  ASSERT_EQ(halved.width, exact.width);
+  double worst = 0.0, mean = 0.0, angle = 0.0;
+  const int border = 8;  // the blur's borders differ with the resolution
+  int count = 0;
+  for (int y = border; y < exact.height - border; ++y)
+    for (int x = border; x < exact.width - border; ++x, ++count) {
+      for (int c = 0; c < kGuidanceChannels; ++c) {
+        const double d = std::abs(halved.at(x, y)[c] - exact.at(x, y)[c]);
+        worst = std::max(worst, d);
+        mean += d / kGuidanceChannels;
+      }
+      const std::size_t i = static_cast<std::size_t>(y) * exact.width + x;
+      angle += std::abs(std::sin(halved.grainAngle[i] - exact.grainAngle[i]));
+    }
+  mean /= count;
+  angle /= count;
+  std::printf("fine-grid guidance: mean difference %.4f, largest %.4f, grain angle %.4f rad\n", mean, worst,
+              angle);
+  EXPECT_LT(mean, 0.02);
+  EXPECT_LT(angle, 0.03);
+}
