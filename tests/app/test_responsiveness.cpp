@@ -1,5 +1,6 @@
 // The editor's event loop stays responsive while long jobs run (ring detection, texture inference, photo
-// import, and a growth-field fit and a volume export at the same time), and closing the window during a job
+// import, the photo-true surfaces made while the cut plane moves, and a growth-field fit and a volume
+// export at the same time), and closing the window during a job
 // cancels it cleanly: the window goes away at once, the fit is not applied and the export leaves no file
 // behind (issue 8).
 //
@@ -19,6 +20,8 @@
 #include <QtTest>
 #include <algorithm>
 
+#include "appearance_controller.hpp"
+#include "cut_view.hpp"
 #include "demo_window.hpp"
 #include "document.hpp"
 #include "job_runner.hpp"
@@ -105,6 +108,7 @@ class TestResponsiveness : public QObject {
   void fitAndExportKeepTheEventLoopResponsive();
   void detectionAndTextureInferenceKeepTheEventLoopResponsive();
   void photoImportKeepsTheEventLoopResponsive();
+  void photoTrueAppearanceKeepsTheEventLoopResponsive();
   void closingDuringAJobCancelsIt();
 
  private:
@@ -228,6 +232,31 @@ void TestResponsiveness::photoImportKeepsTheEventLoopResponsive() {
       loadedMs, loadStall, probe.elapsedMs(), probe.longestMs());
   QVERIFY2(probe.longestMs() < kMaxImportStallMs,
            qPrintable(QString("the event loop stalled for %1 ms during the import").arg(probe.longestMs())));
+}
+
+// Texture > Photo-true Appearance: the guidance, the cut and the six faces are made in the background and
+// land as pictures on the GUI thread (textures, the faces view), while the user moves the cut plane.
+void TestResponsiveness::photoTrueAppearanceKeepsTheEventLoopResponsive() {
+  auto window = openDemo("demo_photo_true");
+  QVERIFY(window);
+  AppearanceController* appearance = window->appearance();
+  QSignalSpy faces(appearance, &AppearanceController::facesMade);
+  window->document()->setCutEnabled(true);
+  StallProbe probe;
+  probe.start();
+  appearance->photoTrueAction()->trigger();
+  for (int step = 0; step < 5; ++step) {  // the plane dragged while the surfaces are being made
+    QTest::qWait(200);
+    window->document()->editCutPlane({float(step), 10.0f * step, 20.0f}, step == 4);
+  }
+  QTRY_VERIFY_WITH_TIMEOUT(faces.count() > 0 && !appearance->isWorking(), 2 * kTimeoutMs);
+  probe.stop();
+  QVERIFY(window->cutView()->showsCutAppearance());
+  qInfo("photo-true appearance: %lld ms, longest event-loop stall %lld ms", probe.elapsedMs(),
+        probe.longestMs());
+  QVERIFY2(probe.longestMs() < kMaxStallMs,
+           qPrintable(QString("the event loop stalled for %1 ms while the photo-true surfaces were made")
+                          .arg(probe.longestMs())));
 }
 
 void TestResponsiveness::closingDuringAJobCancelsIt() {
