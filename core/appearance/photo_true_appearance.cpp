@@ -224,7 +224,7 @@ Image PhotoTrueAppearance::renderGuidance(const SurfaceGuidance& guidance, std::
                                           const Progress& progress) const {
   GuidedSynthesisOptions synthesis = options_.synthesis;
   synthesis.seed = mixSeed(options_.synthesis.seed, salt);
-  return synthesizeGuided(exemplars_, guidance, synthesis, progress);
+  return synthesizeGuided(*exemplars_, guidance, synthesis, progress);
 }
 
 std::array<Image, 6> loadAppearancePhotos(const Project& project) {
