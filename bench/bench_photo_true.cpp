@@ -1,15 +1,16 @@
 // kerf_bench: the photo-true appearance (issue 17) on the demo block, whose six faces rendered by the model
 // stand in for photos (docs/texture.md, "Photo-true appearance"). Targets of issue 17 on 2 cores: a
-// 1024 x 1024 cut <= 3 s, the six faces at 512 x 512 <= 10 s.
+// 1024 x 1024 cut <= 3 s, the six faces at 512 x 512 <= 10 s, a 256^3 colour volume <= 60 s.
 //
 //   build/test/bench/kerf_bench --benchmark_filter=PhotoTrue
 //
 // A surface is synthesised at the photos' resolution, so the cut uses photos of 1024 px a face (25.6 px/mm
 // on the 40 mm cube: the cut parallel to face A is synthesised at 1024 x 1024) and the faces photos of
-// 512 px. The exemplars' guidance (PhotoTrueAppearance's constructor, done once per project) is timed on
-// its own. Counters: cpu_s, the process's CPU time over all threads per iteration (Google Benchmark's CPU
-// column counts the calling thread only, not the pool's workers), and peak_MiB, the process's peak
-// resident memory so far (photos and setup included).
+// 512 px, the volume photos of 256 px (6.4 px/mm, Mokume's: 256 slices of 256 x 256). The exemplars' guidance
+// (PhotoTrueAppearance's constructor, done once per project) is timed on its own. Counters: cpu_s, the
+// process's CPU time over all threads per iteration (Google Benchmark's CPU column counts the calling thread
+// only, not the pool's workers), and peak_MiB, the process's peak resident memory so far (photos and setup
+// included).
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -100,3 +101,18 @@ void BM_PhotoTrueSixFaces512(benchmark::State& state) {
 BENCHMARK(BM_PhotoTrueSixFaces512)->ArgName("threads")->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
+
+void BM_PhotoTrueVolume256(benchmark::State& state) {
+  kerf::setWorkerThreads(static_cast<int>(state.range(0)));
+  const PhotoBlock& block = photoBlock(256);
+  const kerf::PhotoTrueAppearance appearance(*block.model, block.photos, {});
+  const double cpu = processCpuSeconds();
+  for (auto _ : state) {
+    const kerf::PhotoTrueVolume volume = appearance.renderVolume({256, 256, 256});
+    benchmark::DoNotOptimize(volume.rgb.data());
+    state.counters["voxels"] = double(volume.size.x) * volume.size.y * volume.size.z;
+  }
+  countResources(state, cpu);
+  kerf::setWorkerThreads(0);
+}
+BENCHMARK(BM_PhotoTrueVolume256)->ArgName("threads")->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);

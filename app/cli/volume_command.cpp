@@ -1,6 +1,7 @@
 // export-volume: the growth field or the colour as a NRRD or OpenVDB volume (also `export` with .nrrd/.vdb).
 #include <cstdio>
 
+#include "appearance/photo_true_source.hpp"
 #include "command.hpp"
 #include "export/export_formats.hpp"
 #include "export/volume_export.hpp"
@@ -22,7 +23,8 @@ Command addExportVolumeCommand(CLI::App& app) {
   volume->add_option("PROJECT", o->document, "A .kerf project or a Mokume-style sample folder")->required();
   volume
       ->add_option("--quantity", o->quantity,
-                   "growth (float years), color (uint8 RGB, the procedural model's) or ring-uncertainty "
+                   "growth (float years), color (uint8 RGB, in the project's appearance: photo-true or "
+                   "procedural) or ring-uncertainty "
                    "(float mm: how sure the fit "
                    "is, 1 sigma; from `fit --uncertainty N`)")
       ->check(CLI::IsMember({"growth", "color", "ring-uncertainty"}));
@@ -31,16 +33,20 @@ Command addExportVolumeCommand(CLI::App& app) {
   return {volume, [o](Context& context) {
             const Project project = loadDocument(o->document);
             const WoodModel model(project);
-            const VolumeExportResult result =
-                exportVolume(model, volumeQuantityFromName(o->quantity), o->resolution, o->out,
-                             context.progress(), project.currentRingUncertainty());
+            const VolumeQuantity quantity = volumeQuantityFromName(o->quantity);
+            // A colour volume of a photo-true project is made of its photos (issue 17).
+            const std::optional<PhotoTrueSource> source = photoTrueSourceOf(project);
+            const Progress progress = context.progress();
+            std::unique_ptr<PhotoTrueAppearance> photoTrue;
+            if (source && quantity == VolumeQuantity::Color)
+              photoTrue = makePhotoTrueAppearance(model, *source, progress.part(0.0, 0.05));
+            const VolumeExportResult result = exportVolume(model, quantity, o->resolution, o->out,
+                                                           photoTrue ? progress.part(0.05, 1.0) : progress,
+                                                           project.currentRingUncertainty(), photoTrue.get());
             context.samples = result.samples;
-            std::printf("volume written to %s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
-                        o->out.c_str(), result.size.x, result.size.y, result.size.z, result.spacingMm.x,
-                        result.bytes / 1048576.0);
-            const std::string warning = volumeAppearanceWarning(volumeQuantityFromName(o->quantity),
-                                                                project.appearance == Appearance::Photo);
-            if (!warning.empty()) std::fprintf(stderr, "kerf-cli: warning: %s\n", warning.c_str());
+            std::printf("volume written to %s%s (%d x %d x %d samples, %.4g mm spacing, %.1f MiB)\n",
+                        o->out.c_str(), photoTrue ? " in the photo-true appearance" : "", result.size.x,
+                        result.size.y, result.size.z, result.spacingMm.x, result.bytes / 1048576.0);
           }};
 }
 

@@ -154,17 +154,20 @@ std::shared_ptr<const PreparedExemplars> prepareExemplars(std::vector<Exemplar>&
   return prepare(exemplars, options, true);
 }
 
+TargetLevel targetLevel(const PreparedExemplars& p, const SurfaceGuidance& g) {
+  TargetLevel t = emptyTarget(g.width, g.height, p.chunks, p.patchRadius);
+  t.packed.setFeatures(g.features.data(), kGuidanceChannels, p.kept, p.scale);
+  t.packed.fillPad();
+  t.angle = angleBins(g.grainAngle);
+  return t;
+}
+
 std::vector<TargetLevel> targetLevels(const PreparedExemplars& p, const SurfaceGuidance& target) {
   std::vector<TargetLevel> out;
   SurfaceGuidance halved;
   for (std::size_t level = 0; level < p.levels.size(); ++level) {
     if (level > 0) halved = halveGuidance(level == 1 ? target : halved);
-    const SurfaceGuidance& g = level == 0 ? target : halved;
-    TargetLevel t = emptyTarget(g.width, g.height, p.chunks, p.patchRadius);
-    t.packed.setFeatures(g.features.data(), kGuidanceChannels, p.kept, p.scale);
-    t.packed.fillPad();
-    t.angle = angleBins(g.grainAngle);
-    out.push_back(std::move(t));
+    out.push_back(targetLevel(p, level == 0 ? target : halved));
   }
   return out;
 }

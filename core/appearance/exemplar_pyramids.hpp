@@ -46,5 +46,7 @@ struct TargetLevel {
 // The target's levels, finest first: from its guidance, or those of exemplar `index` itself.
 std::vector<TargetLevel> targetLevels(const PreparedExemplars& prepared, const SurfaceGuidance& target);
 std::vector<TargetLevel> targetLevels(const PreparedExemplars& prepared, int index);
+// One level, from this guidance (a volume's later slices are refined at the finest level only).
+TargetLevel targetLevel(const PreparedExemplars& prepared, const SurfaceGuidance& target);
 
 }  // namespace kerf

@@ -107,6 +107,41 @@ class Synthesis {
     });
   }
 
+  // The previous slice's field and colours, carried along the fibre (GuidedSliceSynthesis): each pixel
+  // starts from the match of the previous slice's pixel nearest to where its wood lay, moved by the rest
+  // of the way (turned as the match is), and its colour estimate is the previous slice's colour there.
+  void initialiseCarried(const std::vector<Match>& previous, const std::vector<float>& previousColour,
+                         const std::vector<glm::vec2>& carry) {
+    nnf_.assign(static_cast<std::size_t>(t_.w) * t_.h, Match{});
+    parallelRows(t_.h, [&](int y) {
+      for (int x = 0; x < t_.w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * t_.w + x;
+        const float cx = std::clamp(carry[i].x, 0.0f, t_.w - 1.0f);
+        const float cy = std::clamp(carry[i].y, 0.0f, t_.h - 1.0f);
+        const int nx = static_cast<int>(std::lround(cx)), ny = static_cast<int>(std::lround(cy));
+        const Match& m = previous[static_cast<std::size_t>(ny) * t_.w + nx];
+        const float dx = cx - nx, dy = cy - ny, c = cos_[m.bin], s = sin_[m.bin];
+        const ExemplarLevel& e = ex_[m.e];
+        Match& out = nnf_[i];
+        out.e = m.e;
+        out.x = std::clamp(m.x + c * dx + s * dy, e.minX, e.maxX);
+        out.y = std::clamp(m.y - s * dx + c * dy, e.minY, e.maxY);
+        // The colour estimate: bilinear in the previous slice.
+        const int x0 = std::min(static_cast<int>(cx), std::max(t_.w - 2, 0));
+        const int y0 = std::min(static_cast<int>(cy), std::max(t_.h - 2, 0));
+        const int x1 = std::min(x0 + 1, t_.w - 1), y1 = std::min(y0 + 1, t_.h - 1);
+        const float fx = cx - x0, fy = cy - y0;
+        auto at = [&](int px, int py, int ch) {
+          return previousColour[(static_cast<std::size_t>(py) * t_.w + px) * kColour + ch];
+        };
+        for (int ch = 0; ch < kColour; ++ch)
+          t_.colour[i * kColour + ch] = (1 - fy) * ((1 - fx) * at(x0, y0, ch) + fx * at(x1, y0, ch)) +
+                                        fy * ((1 - fx) * at(x0, y1, ch) + fx * at(x1, y1, ch));
+      }
+    });
+    updatePackedColours();
+  }
+
   // One PatchMatch pass (a horizontal sweep with propagation and random search, then a vertical sweep with
   // propagation), then, where the next pass needs the colours, the vote. Without colour: the guidance
   // alone.
@@ -292,8 +327,10 @@ class Synthesis {
 };
 
 // Coarse to fine over the prepared levels (the target's as many).
+// `finalField`, where given, receives the finest level's nearest-neighbour field.
 Image synthesize(const PreparedExemplars& prepared, std::vector<TargetLevel> targets,
-                 const GuidedSynthesisOptions& options, const Progress& progress) {
+                 const GuidedSynthesisOptions& options, const Progress& progress,
+                 std::vector<Match>* finalField = nullptr) {
   if (options.patchRadius != prepared.patchRadius || options.colourWeight != prepared.colourWeight ||
       options.levels < static_cast<int>(prepared.levels.size()))
     throw InputError("photo-true appearance: the photos were prepared with other synthesis options");
@@ -331,9 +368,16 @@ Image synthesize(const PreparedExemplars& prepared, std::vector<TargetLevel> tar
     coarse = std::move(synthesis.field());
     coarseW = t.w, coarseH = t.h;
   }
+  if (finalField) *finalField = std::move(coarse);
   Image out(targets[0].w, targets[0].h, 3);
   out.pixels = std::move(targets[0].colour);
   return out;
+}
+
+std::uint32_t sliceSeed(std::uint32_t seed, int slice) {
+  Random r{(static_cast<std::uint64_t>(seed) << 32) ^ static_cast<std::uint64_t>(slice)};
+  r.next();
+  return static_cast<std::uint32_t>(r.next());
 }
 
 }  // namespace
@@ -351,6 +395,61 @@ Image synthesizeGuided(const PreparedExemplars& exemplars, const SurfaceGuidance
 Image synthesizeGuided(const PreparedExemplars& exemplars, int index, const GuidedSynthesisOptions& options,
                        const Progress& progress) {
   return synthesize(exemplars, targetLevels(exemplars, index), options, progress);
+}
+
+struct GuidedSliceSynthesis::State {
+  std::shared_ptr<const PreparedExemplars> exemplars;
+  GuidedSynthesisOptions options;
+  int continuationPasses = 1;
+  int slice = 0;
+  int w = 0, h = 0;
+  std::vector<Match> field;   // the previous slice's, at the finest level
+  std::vector<float> colour;  // the previous slice's colours (RGB)
+};
+
+GuidedSliceSynthesis::GuidedSliceSynthesis(std::shared_ptr<const PreparedExemplars> exemplars,
+                                           GuidedSynthesisOptions options, int continuationPasses)
+    : state_(std::make_unique<State>()) {
+  if (!exemplars) throw InputError("photo-true appearance: no prepared photos for the slices");
+  if (continuationPasses < 1) throw InputError("photo-true appearance: passes must be at least 1");
+  state_->exemplars = std::move(exemplars);
+  state_->options = options;
+  state_->continuationPasses = continuationPasses;
+}
+
+GuidedSliceSynthesis::~GuidedSliceSynthesis() = default;
+
+Image GuidedSliceSynthesis::next(const SurfaceGuidance& guidance, const std::vector<glm::vec2>& carry,
+                                 const Progress& progress) {
+  State& s = *state_;
+  const PreparedExemplars& prepared = *s.exemplars;
+  GuidedSynthesisOptions options = s.options;
+  options.seed = sliceSeed(s.options.seed, s.slice);
+  Image out(guidance.width, guidance.height, 3);
+  if (s.slice == 0) {
+    out = synthesize(prepared, targetLevels(prepared, guidance), options, progress, &s.field);
+    s.w = guidance.width, s.h = guidance.height;
+  } else {
+    if (guidance.width != s.w || guidance.height != s.h)
+      throw InputError("photo-true appearance: every slice must have the first slice's size");
+    if (carry.size() != static_cast<std::size_t>(s.w) * s.h)
+      throw InputError("photo-true appearance: a slice's carry must give every pixel a place");
+    TargetLevel target = targetLevel(prepared, guidance);
+    const PatchSamples samples(options.patchRadius, distanceStep(options.patchRadius), kSubPixelPhases);
+    Synthesis synthesis(prepared.levels[0], target, options, samples, prepared.colourScale, 0, false);
+    synthesis.initialiseCarried(s.field, s.colour, carry);
+    for (int pass = 0; pass < s.continuationPasses; ++pass) {
+      progress.throwIfCancelled();
+      synthesis.pass(pass, options.colourWeight > 0.0f, false);
+      progress.set(double(pass + 1) / s.continuationPasses);
+    }
+    synthesis.copyMatches();
+    s.field = std::move(synthesis.field());
+    out.pixels = std::move(target.colour);
+  }
+  s.colour = out.pixels;
+  ++s.slice;
+  return out;
 }
 
 }  // namespace kerf

@@ -22,6 +22,7 @@
 // and reads only its own line of the field, with random numbers drawn from (seed, level, pass, line), so the
 // result does not depend on the number of threads: deterministic for a seed.
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <vector>
 
@@ -65,5 +66,34 @@ Image synthesizeGuided(const PreparedExemplars& exemplars, const SurfaceGuidance
 // Exemplar `index`'s own surface (the guidance it was prepared with), made from all the exemplars.
 Image synthesizeGuided(const PreparedExemplars& exemplars, int index, const GuidedSynthesisOptions& options,
                        const Progress& progress = {});
+
+// The slices of a colour volume (issue 17): parallel surfaces one after another, each made coherent with
+// the one before along the fibres, in the way video texture synthesis keeps frames coherent (the previous
+// frame's field and colours as the next one's start and colour term). The first slice is synthesised as
+// any surface. Every later one starts from the previous slice's nearest-neighbour field and colours,
+// carried along the fibre, and is refined by PatchMatch passes at the finest level with those colours in
+// the distance (GuidedSynthesisOptions::colourWeight). A pore, a ray or a fibre streak found on one slice
+// therefore goes on in the next as long as the guidance lets it: pores become tubes along the fibres, rays
+// ribbons, and the latewood bands move as the field says. Deterministic for a seed: each slice's random
+// numbers come from (seed, slice index).
+class GuidedSliceSynthesis {
+ public:
+  // `continuationPasses`: the passes that refine a carried slice (at least 1).
+  GuidedSliceSynthesis(std::shared_ptr<const PreparedExemplars> exemplars, GuidedSynthesisOptions options,
+                       int continuationPasses = 1);
+  ~GuidedSliceSynthesis();
+  GuidedSliceSynthesis(const GuidedSliceSynthesis&) = delete;
+  GuidedSliceSynthesis& operator=(const GuidedSliceSynthesis&) = delete;
+
+  // The next slice's colours (RGB at the guidance's size). `carry`: for every pixel (row-major), where in
+  // the previous slice, in its pixels, the wood of this pixel lay (the fibre through it, followed back
+  // one slice); ignored for the first slice. Every slice must have the first one's size (InputError).
+  Image next(const SurfaceGuidance& guidance, const std::vector<glm::vec2>& carry,
+             const Progress& progress = {});
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace kerf

@@ -28,6 +28,7 @@
 
 #include "appearance/guidance_features.hpp"
 #include "appearance/guided_synthesis.hpp"
+#include "appearance/photo_true_volume.hpp"
 #include "appearance/surface_grid.hpp"
 #include "geometry/cut_plane.hpp"
 #include "geometry/face_set.hpp"
@@ -67,6 +68,11 @@ class PhotoTrueAppearance {
   // appearance/texel_guidance.hpp), RGB at the guidance's size.
   Image renderGuidance(const SurfaceGuidance& guidance, std::uint32_t salt,
                        const Progress& progress = {}) const;
+  // The colour volume (appearance/photo_true_volume.hpp) for an export of `samples` voxels over the block:
+  // synthesised at the photos' resolution across the slices and at most that along them, to be sampled
+  // at the export's voxels. InputError when it would not fit in memory. Cancellable. Defined in
+  // photo_true_volume.cpp.
+  PhotoTrueVolume renderVolume(glm::ivec3 samples, const Progress& progress = {}) const;
   const PhotoTrueOptions& options() const { return options_; }
 
  private:

@@ -31,7 +31,7 @@ bool writesColour(const ExportRequest& request, ExportKind kind) {
     case ExportKind::Part:
       return true;
     case ExportKind::Volume:
-      return false;  // a volume is the procedural model's (see the warning below)
+      return request.quantity == VolumeQuantity::Color;
   }
   return false;
 }
@@ -117,15 +117,14 @@ ExportSummary runExport(const WoodModel& model, const ExportRequest& request, co
     case ExportKind::Volume: {
       const VolumeExportResult result =
           exportVolume(model, request.quantity, request.resolution, request.out, progress,
-                       request.ringUncertainty ? &*request.ringUncertainty : nullptr);
+                       request.ringUncertainty ? &*request.ringUncertainty : nullptr, photoTrue);
       summary.samples = result.samples;
       std::ostringstream s;
       s.precision(4);
-      s << "volume written to " << out << " (" << result.size.x << " x " << result.size.y << " x "
-        << result.size.z << " samples, " << result.spacingMm.x << " mm spacing, " << result.bytes / 1048576.0
-        << " MiB)";
+      s << "volume written to " << out << appearanceNote(photoTrue) << " (" << result.size.x << " x "
+        << result.size.y << " x " << result.size.z << " samples, " << result.spacingMm.x << " mm spacing, "
+        << result.bytes / 1048576.0 << " MiB)";
       summary.message = s.str();
-      summary.warning = volumeAppearanceWarning(request.quantity, request.photoTrue.has_value());
       return summary;
     }
     case ExportKind::DepthStack: {

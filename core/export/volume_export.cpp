@@ -22,12 +22,6 @@ VolumeQuantity volumeQuantityFromName(std::string_view name) {
                    "\" (use growth, color or ring-uncertainty)");
 }
 
-std::string volumeAppearanceWarning(VolumeQuantity quantity, bool photoTrueProject) {
-  if (quantity != VolumeQuantity::Color || !photoTrueProject) return {};
-  return "the colour volume is the procedural model's: the project's photo-true appearance makes surfaces, "
-         "not volumes (docs/export.md)";
-}
-
 namespace {
 
 // A volume is written slice by slice (NRRD, raw) or kept whole until written (OpenVDB): refuse at once
@@ -59,8 +53,8 @@ void checkVolumeFits(const std::filesystem::path& path, glm::ivec3 n, int bytesP
 }  // namespace
 
 VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
-                                const std::filesystem::path& path, const Progress& progress,
-                                const RingUncertainty* uncertainty) {
+                                const std::filesystem::path& path, const Progress& wholeProgress,
+                                const RingUncertainty* uncertainty, const PhotoTrueAppearance* photoTrue) {
   const bool sure = quantity == VolumeQuantity::RingUncertainty;
   if (sure && (!uncertainty || uncertainty->empty()))
     throw InputError(
@@ -113,11 +107,16 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
     layout.components = 3;
     layout.comment = "Kerf wood colour (sRGB-encoded 8-bit) in the block frame";
     layout.keyValues.emplace_back("quantity", "color");
-    layout.keyValues.emplace_back("appearance", "procedural");  // never photo-true: volumeAppearanceWarning
+    layout.keyValues.emplace_back("appearance", photoTrue ? "photo-true" : "procedural");
   }
 
   const bool floatSamples = growth || sure;
   checkVolumeFits(path, n, floatSamples ? 4 : 3);
+  const bool photoColour = photoTrue && quantity == VolumeQuantity::Color;
+  // The photo-true volume is synthesised first, then sampled at the voxels (most of the time is its).
+  PhotoTrueVolume photoVolume;
+  if (photoColour) photoVolume = photoTrue->renderVolume(n, wholeProgress.part(0.0, 0.9));
+  const Progress progress = photoColour ? wholeProgress.part(0.9, 1.0) : wholeProgress;
   const std::unique_ptr<VolumeWriter> writer = openVolumeWriter(path, layout);  // .nrrd or .vdb
   const std::size_t sliceSamples = static_cast<std::size_t>(n.x) * n.y;
   std::vector<float> floats(floatSamples ? sliceSamples : 0);
@@ -136,7 +135,7 @@ VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity,
                      } else if (growth) {
                        floats[i] = model.material().year(p);
                      } else {
-                       const glm::vec3 c = model.evaluate(p).color;
+                       const glm::vec3 c = photoColour ? photoVolume.colourAt(p) : model.evaluate(p).color;
                        for (int ch = 0; ch < 3; ++ch)
                          bytes[i * 3 + ch] = static_cast<std::uint8_t>(std::lround(c[ch] * 255.0f));
                      }

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "appearance/photo_true_appearance.hpp"
 #include "field/ring_uncertainty.hpp"
 #include "render/wood_model.hpp"
 #include "util/progress.hpp"
@@ -22,12 +23,6 @@ enum class VolumeQuantity {
 // "growth" | "color" | "ring-uncertainty"; InputError otherwise
 VolumeQuantity volumeQuantityFromName(std::string_view name);
 
-// A colour volume is always the procedural model's: the photo-true appearance (issue 17) makes surfaces,
-// one at a time, and a volume synthesised slice by slice would be slow and its pores would not continue
-// from slice to slice (docs/export.md, "Colour volumes"). What to tell the user of a photo-true project
-// whose colour volume they asked for; empty when there is nothing to tell.
-std::string volumeAppearanceWarning(VolumeQuantity quantity, bool photoTrueProject);
-
 struct VolumeExportResult {
   glm::ivec3 size{0};
   glm::vec3 spacingMm{0};
@@ -38,8 +33,11 @@ struct VolumeExportResult {
 // `resolution` samples along the block's longest side (1..4096); the other sides get the same spacing,
 // rounded to whole samples. Samples sit at voxel centres covering the block exactly.
 // RingUncertainty needs `uncertainty` (InputError without it: "the project has no ring uncertainty ...").
+// A Color volume with `photoTrue` is the photo-true appearance's (PhotoTrueAppearance::renderVolume, issue
+// 17; header key appearance:=photo-true), otherwise the procedural model's.
 VolumeExportResult exportVolume(const WoodModel& model, VolumeQuantity quantity, int resolution,
                                 const std::filesystem::path& path, const Progress& progress = {},
-                                const RingUncertainty* uncertainty = nullptr);
+                                const RingUncertainty* uncertainty = nullptr,
+                                const PhotoTrueAppearance* photoTrue = nullptr);
 
 }  // namespace kerf

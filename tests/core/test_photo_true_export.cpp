@@ -1,7 +1,7 @@
 // Exports of a photo-true project (issue 17, docs/export.md): the demo block rendered by Kerf's own model
 // stands in for the photos (as in test_photo_true.cpp), written as the project's face photos. An exported
 // face or cut is the appearance's own surface (and not the procedural model's); a textured part's texels
-// come from the photos and never from a held-out face's; a colour volume says that it is procedural.
+// come from the photos and never from a held-out face's (colour volumes: test_photo_true_volume.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -249,27 +249,6 @@ TEST(PhotoTrueExport, PartExportReportsProgressAndCancels) {
   r.out = p.dir / "cancelled.glb";
   EXPECT_THROW(runExport(*p.model, r, {nullptr, stop.get_token()}), Cancelled);
   EXPECT_FALSE(fs::exists(r.out));
-}
-
-TEST(PhotoTrueExport, ColourVolumeIsProceduralAndSaysSo) {
-  PhotoProject p("volume");
-  // The photos are not read for a volume: a missing one does not matter.
-  fs::remove(p.project.facePhotos[0]);
-  ExportRequest colour = p.request(p.dir / "colour.nrrd");
-  colour.quantity = VolumeQuantity::Color;
-  colour.resolution = 8;
-  const ExportSummary summary = runExport(*p.model, colour);
-  EXPECT_NE(summary.warning.find("the colour volume is the procedural model's"), std::string::npos)
-      << summary.warning;
-  std::ifstream header(p.dir / "colour.nrrd");
-  const std::string text((std::istreambuf_iterator<char>(header)), {});
-  EXPECT_NE(text.substr(0, 2000).find("appearance:=procedural"), std::string::npos);
-  ExportRequest growth = colour;
-  growth.out = p.dir / "growth.nrrd";
-  growth.quantity = VolumeQuantity::Growth;
-  EXPECT_TRUE(runExport(*p.model, growth).warning.empty());
-  colour.photoTrue.reset();  // a procedural project: nothing to warn about
-  EXPECT_TRUE(runExport(*p.model, colour).warning.empty());
 }
 
 TEST(PhotoTrueExport, MissingPhotoIsAnErrorNamingTheFile) {
