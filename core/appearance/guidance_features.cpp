@@ -43,7 +43,7 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
   // Pass 1: G at every pixel and half a pixel along the normal (its derivative across the surface), the
   // fibre direction. The field extends beyond the block, so pixels outside it still get features and the
   // in-plane derivatives below need no special border.
-  std::vector<float> year(n), yearAbove(n);
+  std::vector<float> year(n), yearAbove(n), knot(n);
   std::vector<glm::vec3> fibre(n);
   const float stepMm = 0.5f / grid.pxPerMm();
   const Block& block = model.block();
@@ -55,7 +55,8 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
   const int sh = (h - 1) / step + 1 + (step > 1 && (h - 1) % step != 0 ? 1 : 0);
   auto sampleX = [&](int sx) { return std::min(sx * step, w - 1); };
   auto sampleY = [&](int sy) { return std::min(sy * step, h - 1); };
-  std::vector<float> sampledYear(static_cast<std::size_t>(sw) * sh), sampledAbove(sampledYear.size());
+  std::vector<float> sampledYear(static_cast<std::size_t>(sw) * sh), sampledAbove(sampledYear.size()),
+      sampledKnot(sampledYear.size());
   std::vector<glm::vec3> sampledFibre(sampledYear.size());
   parallelRows(
       sh,
@@ -68,6 +69,7 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
           const auto location = model.material().locate(p, true);
           sampledYear[i] = location.year;
           sampledFibre[i] = location.fiberDirection;
+          sampledKnot[i] = location.knotDarkness;
           sampledAbove[i] = model.material().year(p + stepMm * grid.normal);
         }
       },
@@ -95,6 +97,7 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       year[i] = mix(sampledYear);
       yearAbove[i] = mix(sampledAbove);
+      knot[i] = mix(sampledKnot);
       const glm::vec3 f = mix(sampledFibre);
       fibre[i] = step > 1 ? f / std::max(glm::length(f), 1e-9f) : f;
       out.inside[i] = block.contains(grid.point(float(x), float(y))) ? 1 : 0;
@@ -149,6 +152,7 @@ SurfaceGuidance computeGuidance(const WoodModel& model, const SurfaceGrid& grid,
       feature[4] = weights.density * std::log(std::max(gradient, 1e-3f));
       feature[5] = weights.sapwood * smoothStep(sapFrom, sapTo, year[i]);
       feature[6] = weights.year * year[i];
+      feature[kKnotChannel] = weights.knot * knot[i];
     }
   });
   // The grain direction from the tensor averaged over about a millimetre (as a structure tensor is, and

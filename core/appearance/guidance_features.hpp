@@ -16,6 +16,11 @@
 //   ring angle     the ring bands' direction in the surface relative to the grain direction below
 //                  (doubled, scaled by how steeply the rings cross the surface): bands along the fibre
 //                  (quarter-sawn stripes) or across it (flat-sawn arches)
+//   knot           how much the point is knot wood: the model's knot darkness (Larsson et al. 2022 Sec.
+//                  4.3; 0 in clear wood, 1 inside a knot, soft at its edge), so that a knot on a surface is
+//                  made of the photos' knot pixels and clear wood never of them. The knot's own rings are
+//                  already in the ring phase (the year is the knots' merged field, Mokume Eq. 7). Zero on
+//                  every photo of a block without knots, and then not packed (no cost).
 // and, to orient patches, the grain direction in the surface's image (radians, x right, y down),
 // averaged over about a millimetre: the fibre projected onto the surface on side grain (pores and fibre
 // streaks run along it), the in-plane ring tangent on end grain (where the projection vanishes), blended
@@ -40,10 +45,12 @@ struct GuidanceWeights {
   float sapwood = 0.5f;
   float year = 0.0f;  // per year
   float ringAngle = 2.0f;
+  float knot = 10.0f;
 };
 
-// cos, sin (phase), end grain, flat-sawn, density, sapwood, year, ring bands against grain (cos, sin)
-inline constexpr int kGuidanceChannels = 9;
+// cos, sin (phase), end grain, flat-sawn, density, sapwood, year, ring bands against grain (cos, sin), knot
+inline constexpr int kGuidanceChannels = 10;
+inline constexpr int kKnotChannel = 9;
 
 struct SurfaceGuidance {
   int width = 0, height = 0;

@@ -149,7 +149,8 @@ SurfaceGuidance computeTexelGuidance(const WoodModel& model, const TexelSurface&
           const TexelFrame frame(s.right[i], s.down[i]);
           if (!frame.valid()) continue;
           out.inside[i] = 1;
-          const WoodSample sample = model.evaluate(s.point[i], -1, true);
+          // Where the texel lies in the tree (year, fibre, knot), without shading it.
+          const auto sample = model.material().locate(s.point[i], true);
           const float stepMm = 0.5f * std::min(glm::length(s.right[i]), glm::length(s.down[i]));
           const glm::vec3 grad = growthGradient(model.material(), s.point[i], stepMm);
           const float gradient = glm::length(grad) + 1e-6f;
@@ -187,6 +188,7 @@ SurfaceGuidance computeTexelGuidance(const WoodModel& model, const TexelSurface&
           feature[4] = weights.density * std::log(std::max(gradient, 1e-3f));
           feature[5] = weights.sapwood * smoothStep(sapFrom, sapTo, sample.year);
           feature[6] = weights.year * sample.year;
+          feature[kKnotChannel] = weights.knot * sample.knotDarkness;
         }
       },
       progress.part(0.0, 0.9));

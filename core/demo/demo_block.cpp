@@ -33,10 +33,6 @@ Project demoProject(std::uint32_t seed) {
   return project;
 }
 
-namespace {
-
-// A knot leaving the pith through the block, leaning up along the stem as branches do, and its centres
-// where its axis enters and leaves the block (the marks a user would make).
 void addDemoKnot(Project& project) {
   const WoodParameters& p = project.params;
   const PithAxis pith = PithAxis::fromAngles(p.pithOrigin, p.pithTilt, p.pithAzimuth);
@@ -72,8 +68,6 @@ void addDemoKnot(Project& project) {
     project.annotations.knots.push_back({0, face, blockToFaceMm(project.block, face, q)});
   }
 }
-
-}  // namespace
 
 void applyPhotoLook(Image& image, FaceId face, std::uint32_t seed) {
   const std::uint32_t h = noise::hash(faceIndex(face), static_cast<std::int32_t>(seed), 0xfaceu);

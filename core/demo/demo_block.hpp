@@ -27,6 +27,10 @@ struct DemoOptions {
 
 // The demo block's true parameters: a 40 mm cube of ring-porous hardwood with its pith outside the block.
 Project demoProject(std::uint32_t seed = 7);
+// The demo's knot (DemoOptions::knot): a knot leaving the pith through the block, leaning up along the stem
+// as branches do, and its centres marked where its axis enters and leaves the block (the marks a user would
+// make).
+void addDemoKnot(Project& project);
 
 // Applies the photograph look to a rendered face, deterministically from (face, seed).
 void applyPhotoLook(Image& image, FaceId face, std::uint32_t seed);
