@@ -177,7 +177,16 @@ void MainWindow::createDocks() {
   controlsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   controlsScroll->setMinimumWidth(cutControls_->minimumSizeHint().width() + 16);
   cutLayout->addWidget(controlsScroll);
-  cutLayout->addWidget(cutView_, 1);
+  // Above the cut: the photo of the real cut and how it is compared (filled by createControllers).
+  cutBar_ = new QToolBar(cutPane);
+  cutBar_->setObjectName("cutPhotoBar");
+  cutBar_->setIconSize(QSize(16, 16));
+  auto* cutColumn = new QVBoxLayout;
+  cutColumn->setContentsMargins(0, 0, 0, 0);
+  cutColumn->setSpacing(0);
+  cutColumn->addWidget(cutBar_);
+  cutColumn->addWidget(cutView_, 1);
+  cutLayout->addLayout(cutColumn, 1);
   auto* cut = new QDockWidget(tr("Cut"), this);
   cut->setObjectName("cutDock");
   // Its title down the left side: the height goes to the cut itself.
