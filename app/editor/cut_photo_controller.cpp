@@ -81,6 +81,9 @@ CutPhotoController::CutPhotoController(const EditorContext& context, CutView* cu
       tr("Fit the cut photo to the cut: drag its four corners onto the corners of the sawn face, turn it by "
          "quarter turns or mirror it (a photo of the other half of the board)"));
   removeAction_->setToolTip(tr("Take the cut photo off the cut (undoable)"));
+  // The Cut panel's buttons are narrow: short names there, the full ones in the menus.
+  alignAction_->setIconText(tr("Align…"));
+  removeAction_->setIconText(tr("Remove"));
   connect(loadAction_, &QAction::triggered, this, &CutPhotoController::chooseCutPhoto);
   connect(alignAction_, &QAction::triggered, this, &CutPhotoController::chooseAlignment);
   connect(removeAction_, &QAction::triggered, this, &CutPhotoController::removeCutPhoto);

@@ -181,7 +181,8 @@ class MainWindow : public QMainWindow {
   ExportController* exports_ = nullptr;
   FilesController* files_ = nullptr;
   CutPhotoController* cutPhoto_ = nullptr;
-  QToolBar* cutBar_ = nullptr;
+  QToolBar* cutBar_ = nullptr;         // the cut photo's commands
+  QToolBar* cutDisplayBar_ = nullptr;  // what the cut shows
   WorkPath* workPath_ = nullptr;
 
   WindowLayout* layout_ = nullptr;

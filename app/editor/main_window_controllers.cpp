@@ -25,11 +25,9 @@ void MainWindow::createControllers(RenderSettings settings) {
   files_ = new FilesController(context, faces_);
   cutPhoto_ = new CutPhotoController(context, cutView_);
   cutBar_->addAction(cutPhoto_->loadAction());
-  cutBar_->addSeparator();
-  cutBar_->addActions(cutPhoto_->displayGroup()->actions());
-  cutBar_->addSeparator();
   cutBar_->addAction(cutPhoto_->alignAction());
   cutBar_->addAction(cutPhoto_->removeAction());
+  cutDisplayBar_->addActions(cutPhoto_->displayGroup()->actions());
   connect(appearance_, &AppearanceController::cutMade, cutPhoto_, &CutPhotoController::modelSideChanged);
   for (EditorController* controller : std::initializer_list<EditorController*>{
            faces_, rings_, texture_, appearance_, logBoard_, exports_, files_, cutPhoto_})
