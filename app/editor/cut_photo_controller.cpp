@@ -192,6 +192,10 @@ void CutPhotoController::setDisplay(CutDisplay display) {
   startDifference();
 }
 
+bool CutPhotoController::showsDocumentPhoto() const {
+  return shownPhoto_ && document_->cutPhoto() && *shownPhoto_ == *document_->cutPhoto();
+}
+
 void CutPhotoController::updateActions() {
   const bool has = document_->cutPhoto().has_value();
   alignAction_->setEnabled(has && !document_->cutPhotoImage().isNull());
@@ -207,6 +211,7 @@ void CutPhotoController::photoChanged() {
   if (!photo) {
     ++rectifyGeneration_;
     restoring_.clear();
+    shownPhoto_.reset();
     cutView_->setCutPhoto({});
     emit cutPhotoShown();
     return;
@@ -223,6 +228,7 @@ void CutPhotoController::restoreImage() {
   if (restoring_ == path) return;
   restoring_ = path;
   ++rectifyGeneration_;
+  shownPhoto_.reset();
   cutView_->setCutPhoto({});
   runInBackground(
       this, [path] { return readPhoto(path); },
@@ -271,6 +277,7 @@ void CutPhotoController::startRectify() {
         const auto* rectified =
             static_cast<const Rectified*>(result.value<std::shared_ptr<const void>>().get());
         pxPerMm_ = rectified->pxPerMm;
+        shownPhoto_ = photo;
         CutPhotoPicture picture;
         picture.photo = rectified->surface;
         picture.plane = photo.plane;

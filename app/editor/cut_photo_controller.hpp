@@ -12,9 +12,11 @@
 #include <QString>
 #include <array>
 #include <glm/vec2.hpp>
+#include <optional>
 
 #include "cut_view.hpp"
 #include "editor_controller.hpp"
+#include "io/cut_photo.hpp"
 
 class QAction;
 class QActionGroup;
@@ -42,6 +44,8 @@ class CutPhotoController : public EditorController {
   void setAlignment(const std::array<glm::vec2, 4>& corners, int rotationDegrees, bool flip);
   void removeCutPhoto();
   void setDisplay(CutDisplay display);
+  // Whether the cut panel's picture is of the document's cut photo as it is now (its file and alignment).
+  bool showsDocumentPhoto() const;
   // The photo-true cut landed, or something else the model's side of the difference depends on changed.
   void modelSideChanged();
 
@@ -64,6 +68,7 @@ class CutPhotoController : public EditorController {
   int rectifyGeneration_ = 0, differenceGeneration_ = 0;
   QString restoring_;  // the saved photo being read after opening ("" when none)
   float pxPerMm_ = 0.0f;
+  std::optional<CutPhoto> shownPhoto_;  // what the panel's picture was rectified from
 };
 
 }  // namespace kerf

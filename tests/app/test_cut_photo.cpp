@@ -8,6 +8,7 @@
 // cut_photo_split.png and cut_photo_difference.png.
 #include <QActionGroup>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QMenu>
@@ -17,6 +18,7 @@
 
 #include "appearance_controller.hpp"
 #include "cut_photo_controller.hpp"
+#include "cut_photo_dialog.hpp"
 #include "cut_view.hpp"
 #include "demo_window.hpp"
 #include "document.hpp"
@@ -78,6 +80,7 @@ class TestCutPhoto : public QObject {
   void splitShowsThePhotoLeftAndTheModelRight();
   void differenceIsNearZeroForTheModelsOwnCut();
   void alignmentIsAnUndoStep();
+  void alignDialogTurnsAndMirrors();
   void anotherPlaneHidesThePhotoAndReturningShowsIt();
   void saveAndOpenRestoreThePhotoAndItsAlignment();
   void aMissingPhotoOnOpenNamesTheFile();
@@ -110,9 +113,14 @@ class TestCutPhoto : public QObject {
 };
 
 bool TestCutPhoto::load(const QString& path) {
-  QSignalSpy shown(controller(), &CutPhotoController::cutPhotoShown);
   controller()->loadCutPhoto(path);
-  return QTest::qWaitFor([&] { return shown.count() > 0 && view()->showsCutPhoto(); }, kTimeoutMs);
+  const auto shown = [&] {
+    const auto& photo = document()->cutPhoto();
+    return photo &&
+           QString::fromStdString(photo->setup.source.string()) == QFileInfo(path).absoluteFilePath() &&
+           controller()->showsDocumentPhoto() && view()->showsCutPhoto();
+  };
+  return QTest::qWaitFor(shown, kTimeoutMs);
 }
 
 void TestCutPhoto::initTestCase() {
@@ -205,14 +213,13 @@ void TestCutPhoto::differenceIsNearZeroForTheModelsOwnCut() {
 }
 
 void TestCutPhoto::alignmentIsAnUndoStep() {
-  QSignalSpy shown(controller(), &CutPhotoController::cutPhotoShown);
   const CutPhoto before = *document()->cutPhoto();
   const QImage beforePicture = view()->cutPhoto().photo.image;
   const int steps = document()->undoStack()->count();
   controller()->setAlignment(before.setup.corners, 90, true);
   QCOMPARE(document()->undoStack()->count(), steps + 1);
   QCOMPARE(document()->undoStack()->undoText(), QStringLiteral("Align cut photo"));
-  QTRY_VERIFY_WITH_TIMEOUT(shown.count() >= 1, kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(controller()->showsDocumentPhoto(), kTimeoutMs);
   QCOMPARE(document()->cutPhoto()->setup.rotationDegrees, 90);
   QVERIFY(document()->cutPhoto()->setup.flip);
   QVERIFY(view()->cutPhoto().photo.image != beforePicture);  // turned and mirrored on the cut
@@ -223,13 +230,30 @@ void TestCutPhoto::alignmentIsAnUndoStep() {
   QCOMPARE(document()->undoStack()->count(), steps + 1);
   document()->undoStack()->undo();
   QVERIFY(*document()->cutPhoto() == before);
-  QTRY_VERIFY_WITH_TIMEOUT(shown.count() >= 2 && view()->cutPhoto().photo.image == beforePicture, kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(controller()->showsDocumentPhoto(), kTimeoutMs);
+  QVERIFY(view()->cutPhoto().photo.image == beforePicture);
   // Remove, and undo brings it back.
   controller()->removeCutPhoto();
   QVERIFY(!document()->cutPhoto());
   QVERIFY(!view()->showsCutPhoto());
   document()->undoStack()->undo();
-  QTRY_VERIFY_WITH_TIMEOUT(view()->showsCutPhoto(), kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(controller()->showsDocumentPhoto() && view()->showsCutPhoto(), kTimeoutMs);
+}
+
+void TestCutPhoto::alignDialogTurnsAndMirrors() {
+  const int steps = document()->undoStack()->index();
+  controller()->alignAction()->trigger();
+  CutPhotoDialog* dialog = nullptr;
+  QTRY_VERIFY((dialog = window_->findChild<CutPhotoDialog*>()) != nullptr && dialog->isVisible());
+  dialog->setRotation(-90);  // the anticlockwise button
+  dialog->setFlip(true);
+  QVERIFY(dialog->grab().save(testing::artifact("cut_photo_align_dialog")));
+  dialog->accept();
+  QCOMPARE(document()->undoStack()->index(), steps + 1);
+  QCOMPARE(document()->cutPhoto()->setup.rotationDegrees, 270);
+  QVERIFY(document()->cutPhoto()->setup.flip);
+  document()->undoStack()->undo();
+  QCOMPARE(document()->cutPhoto()->setup.rotationDegrees, 0);
 }
 
 void TestCutPhoto::anotherPlaneHidesThePhotoAndReturningShowsIt() {
@@ -261,10 +285,9 @@ void TestCutPhoto::saveAndOpenRestoreThePhotoAndItsAlignment() {
   QCOMPARE(cut["photo"].toString(), QStringLiteral("green_cut.png"));  // relative to the project
 
   QSignalSpy ready(window_.get(), &MainWindow::documentReady);
-  QSignalSpy shown(controller(), &CutPhotoController::cutPhotoShown);
   window_->openDocument(project);
   QTRY_VERIFY_WITH_TIMEOUT(ready.count() > 0, kTimeoutMs);
-  QTRY_VERIFY_WITH_TIMEOUT(view()->showsCutPhoto(), kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(controller()->showsDocumentPhoto() && view()->showsCutPhoto(), kTimeoutMs);
   QVERIFY(document()->cutPhoto().has_value());
   QVERIFY(*document()->cutPhoto() == saved);
   QVERIFY(!document()->cutPhotoImage().isNull());
