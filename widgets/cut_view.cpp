@@ -174,23 +174,25 @@ bool CutView::showsCutAppearance() const {
          !appearance_.surface.image.isNull() && bounds();
 }
 
-// The picture mapped onto the cut: its pixel (x, y) centre lies at grid.point(x, y) in the block, which
-// the plane's frame and the zoom put on the widget (an affine map, so one QTransform).
 void CutView::drawCutAppearance(QPainter& painter) const {
-  const SurfaceGrid& grid = appearance_.surface.grid;
+  QPainterPath clip;
+  clip.addPolygon(cutOutline());
+  drawSurface(painter, appearance_.surface, clip);
+}
+
+// A picture mapped onto the cut: its pixel (x, y) centre lies at grid.point(x, y) in the block, which the
+// plane's frame and the zoom put on the widget (an affine map, so one QTransform).
+void CutView::drawSurface(QPainter& painter, const SurfaceImage& surface, const QPainterPath& clip) const {
+  const SurfaceGrid& grid = surface.grid;
   const auto widgetOf = [&](float x, float y) {
     return widgetPointOf(plane_->toPlane(grid.point(x - 0.5f, y - 0.5f)));  // image coordinates: pixel edges
   };
   const QPointF o = widgetOf(0, 0), ex = widgetOf(1, 0) - o, ey = widgetOf(0, 1) - o;
   painter.save();
-  painter.setClipPath([&] {
-    QPainterPath path;
-    path.addPolygon(cutOutline());
-    return path;
-  }());
+  painter.setClipPath(clip);
   painter.setTransform(QTransform(ex.x(), ex.y(), ey.x(), ey.y(), o.x(), o.y()));
   painter.setRenderHint(QPainter::SmoothPixmapTransform);  // bilinear, as the 3D view's textures
-  painter.drawImage(QPointF(0, 0), appearance_.surface.image);
+  painter.drawImage(QPointF(0, 0), surface.image);
   painter.restore();
 }
 
@@ -373,6 +375,7 @@ void CutView::wheelEvent(QWheelEvent* event) {
 }
 
 void CutView::mousePressEvent(QMouseEvent* event) {
+  if (cutSplitPress(event)) return;
   if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
     panning_ = true;
     lastMouse_ = event->position();
@@ -386,6 +389,7 @@ void CutView::mousePressEvent(QMouseEvent* event) {
 void CutView::mouseMoveEvent(QMouseEvent* event) {
   cursor_ = event->position();
   cursorInside_ = true;
+  if (cutSplitMove(event)) return;
   if (panning_) {
     const QPointF delta = event->position() - lastMouse_;
     lastMouse_ = event->position();
@@ -399,6 +403,10 @@ void CutView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void CutView::mouseReleaseEvent(QMouseEvent* event) {
+  if (draggingSplit_ && event->button() == Qt::LeftButton) {
+    draggingSplit_ = false;
+    return;
+  }
   if (panning_ && (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton)) {
     panning_ = false;
     unsetCursor();
@@ -618,6 +626,7 @@ void CutView::drawOverlay() {
   QPainter painter(this);
   painter.setRenderHint(QPainter::Antialiasing);
   if (showsCutAppearance()) drawCutAppearance(painter);
+  drawCutPhoto(painter);
   const QPolygonF outline = cutOutline();
   if (!outline.isEmpty()) {
     painter.setPen(QPen(QColor(255, 255, 255, 150), 1.0));

@@ -28,6 +28,7 @@
 #include <QElapsedTimer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLWidget>
+#include <QPainterPath>
 #include <QPolygonF>
 #include <QString>
 #include <QTimer>
@@ -49,6 +50,22 @@ namespace kerf {
 
 class BoardWoodTextures;
 class WoodProgram;
+
+// What the cut panel shows where a photo of the real cut is aligned on the plane (cut_view_compare.cpp):
+// the model's cut, the photo, photo | model at a draggable line, or where they differ (the faces view's
+// compare displays, drawn alike: compare_overlay.hpp).
+enum class CutDisplay { Model, Photo, Split, Difference };
+inline constexpr int kCutDisplayCount = 4;
+
+// A photo of the real cut, rectified onto the cut of `plane` (its pixels' block points in photo.grid),
+// and the difference heat map on the same grid (face_difference.hpp) with what it was computed against.
+struct CutPhotoPicture {
+  SurfaceImage photo;
+  CutPlaneSetting plane;
+  QImage difference;  // null until computed
+  std::shared_ptr<const WoodModel> differenceModel;
+  bool differenceOfAppearance = false;  // against the photo-true cut, not the procedural wood
+};
 
 class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   Q_OBJECT
@@ -74,6 +91,22 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   // shows its model and plane (surface_image.hpp); until then, and after an edit, the model's wood.
   void setCutAppearance(const CutAppearance& cut);
   bool showsCutAppearance() const;
+  // The cut photo (null photo.image: none) and how it is compared (cut_view_compare.cpp). It is shown only
+  // on its own plane; on another the view says the photo is of another cut (cutPhotoStale()).
+  void setCutPhoto(const CutPhotoPicture& picture);
+  const CutPhotoPicture& cutPhoto() const { return cutPhoto_; }
+  void setCutDisplay(CutDisplay display);
+  CutDisplay cutDisplay() const { return cutDisplay_; }
+  // Where the photo | model line crosses the cut's bounding rectangle, as a fraction of its width.
+  void setCutSplitPosition(double fraction);
+  double cutSplitPosition() const { return cutSplit_; }
+  bool showsCutPhoto() const;       // a photo on the plane shown, and a display that shows it
+  bool cutPhotoStale() const;       // a photo, but of another plane than the one shown
+  bool differenceUpToDate() const;  // the heat map is of the model (and appearance) shown
+  // The split line's widget x (the cut's bounding rectangle), when Split shows it.
+  std::optional<qreal> cutSplitX() const;
+  // The photo-true cut image while it is shown instead of the GLSL wood; null otherwise.
+  QImage shownCutAppearance() const { return showsCutAppearance() ? appearance_.surface.image : QImage(); }
   // The plane, when it passes through the block of the current model.
   std::optional<CutPlane> plane() const;
 
@@ -134,6 +167,7 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void zoomChanged(double pixelsPerMm);
   // After every frame: its GPU time and resolution divisor.
   void frameRendered(double milliseconds, int renderScale);
+  void cutSplitPositionChanged(double fraction);  // also while the line is dragged
   // The GLSL program could not be built (the message is also drawn in the view).
   void glError(const QString& message);
 
@@ -161,6 +195,11 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void drawOverlay();
   void drawRingUncertainty(class QPainter& painter, const QPolygonF& outline);
   void drawCutAppearance(class QPainter& painter) const;
+  void drawSurface(class QPainter& painter, const SurfaceImage& surface, const QPainterPath& clip) const;
+  void drawCutPhoto(class QPainter& painter) const;  // cut_view_compare.cpp
+  QRectF cutRect() const;                            // the cut's bounding rectangle, widget pixels
+  bool cutSplitPress(class QMouseEvent* event);
+  bool cutSplitMove(class QMouseEvent* event);
   void drawRulers(class QPainter& painter) const;
   void setPixelsPerMm(double pixelsPerMm, QPointF anchor);
   void updateCursorText(QPointF widgetPos);
@@ -170,6 +209,10 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   std::shared_ptr<const RingUncertainty> ringUncertainty_;
   std::shared_ptr<const BoardWood> boardWood_;
   CutAppearance appearance_;
+  CutPhotoPicture cutPhoto_;
+  CutDisplay cutDisplay_ = CutDisplay::Model;
+  double cutSplit_ = 0.5;
+  bool draggingSplit_ = false;
   CutPlaneSetting setting_;
   std::optional<CutPlane> plane_;
 

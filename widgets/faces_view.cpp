@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 
+#include "compare_overlay.hpp"
 #include "face_difference_maps.hpp"
 
 namespace kerf {
@@ -617,7 +618,7 @@ void FacesView::paintEvent(QPaintEvent*) {
   for (FaceId face : kAllFaces) drawOverlay(painter, faceRect(face), face);
   for (FaceId face : kAllFaces) drawLabel(painter, faceRect(face), face, labelSide);  // letters on top
   drawCaption(painter);
-  if (compare && display_ == FaceDisplay::Difference) drawDifferenceLegend(painter);
+  if (compare && display_ == FaceDisplay::Difference) drawDifferenceLegend(painter, rect());
 }
 
 void FacesView::drawCaption(QPainter& painter) const {

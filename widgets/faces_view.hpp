@@ -178,7 +178,6 @@ class FacesView : public QWidget {
   void drawSplitFace(QPainter& painter, const QRectF& target, const QImage& photo, const QImage& model) const;
   void drawDifferenceFace(QPainter& painter, const QRectF& target, FaceId face) const;
   void drawTag(QPainter& painter, const QRectF& face, const QString& text, Qt::Alignment corner) const;
-  void drawDifferenceLegend(QPainter& painter) const;
   std::optional<FaceId> splitLineAt(QPointF widgetPos) const;  // a face whose split line is under it
   bool splitMousePress(QMouseEvent* event);
   bool splitMouseMove(QMouseEvent* event);

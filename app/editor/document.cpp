@@ -18,6 +18,7 @@ void Document::reset(const Project& project, const QString& path, const QString&
                      const std::array<QImage, 6>& photos) {
   project_ = project;
   photos_ = photos;
+  cutPhotoImage_ = {};
   path_ = path;
   name_ = name;
   undo_.clear();
@@ -31,6 +32,7 @@ void Document::reset(const Project& project, const QString& path, const QString&
   emit annotationsChanged();
   emit logChanged();
   emit appearanceChanged();
+  emit cutPhotoChanged();
   emit modifiedChanged(false);
 }
 

@@ -77,6 +77,14 @@ class Document : public QObject {
   // document's (undoing the fit hides it, redoing shows it again).
   void setRingUncertainty(RingUncertainty uncertainty);
   const RingUncertainty* ringUncertainty() const { return project_.currentRingUncertainty(); }
+  // The photo of the real cut (Project::cutPhoto) and its pixels (document_cut_photo.cpp). Loading,
+  // aligning and removing it are undo steps; the image is null until a saved photo has been read
+  // (restoreCutPhotoImage), or when its file could not be.
+  const std::optional<CutPhoto>& cutPhoto() const { return project_.cutPhoto; }
+  const QImage& cutPhotoImage() const { return cutPhotoImage_; }
+  void setCutPhoto(std::optional<CutPhoto> photo, const QImage& image, const QString& undoText);
+  // The pixels of the saved photo, read after opening: not an edit (no undo step, not modified).
+  void restoreCutPhotoImage(const QImage& image);
   // Marks the document as holding unsaved work (recovered from an autosave).
   void markModified();
 
@@ -97,6 +105,7 @@ class Document : public QObject {
   void applyLog(const std::optional<ProjectLog>& log, const Block& block);
   void applyBoard(const Board& board);
   void applyKnots(const std::vector<Knot>& knots);
+  void applyCutPhoto(const std::optional<CutPhoto>& photo, const QImage& image);
   void applyBlockAndPhotos(const Block& block, const std::array<QString, 6>& paths,
                            const std::array<QImage, 6>& images);
 
@@ -112,6 +121,7 @@ class Document : public QObject {
   void boardChanged();  // the board moved or resized
   void ringUncertaintyChanged();
   void appearanceChanged();
+  void cutPhotoChanged();
 
  private:
   void rebuildModel();
@@ -119,6 +129,7 @@ class Document : public QObject {
   Project project_;
   std::shared_ptr<const WoodModel> model_;
   std::array<QImage, 6> photos_;
+  QImage cutPhotoImage_;
   QString path_, name_;
   QUndoStack undo_;
   bool dirtyWithoutUndo_ = false;  // view settings changed since the last save

@@ -62,4 +62,11 @@ QUndoCommand* setBlockAndPhotosCommand(Document* document, BlockAndPhotosValue b
       std::move(before), std::move(after), text);
 }
 
+QUndoCommand* setCutPhotoCommand(Document* document, CutPhotoValue before, CutPhotoValue after,
+                                 const QString& text) {
+  return new SwapValueCommand<CutPhotoValue>(
+      [document](const CutPhotoValue& value) { document->applyCutPhoto(value.photo, value.image); },
+      std::move(before), std::move(after), text);
+}
+
 }  // namespace kerf

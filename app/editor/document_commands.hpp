@@ -13,6 +13,7 @@
 #include "field/growth_rates.hpp"
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
+#include "io/cut_photo.hpp"
 #include "params/parameter_schema.hpp"
 #include "rings/annotations.hpp"
 #include "swap_value_command.hpp"
@@ -33,6 +34,12 @@ struct GrowthFieldValue {
 // One face's photo: its file and its image.
 struct FacePhotoValue {
   QString path;
+  QImage image;
+};
+
+// The photo of the real cut (its file, alignment and plane) and its pixels.
+struct CutPhotoValue {
+  std::optional<CutPhoto> photo;
   QImage image;
 };
 
@@ -59,5 +66,7 @@ QUndoCommand* replacePhotoCommand(Document* document, FaceId face, FacePhotoValu
                                   FacePhotoValue after);
 QUndoCommand* setBlockAndPhotosCommand(Document* document, BlockAndPhotosValue before,
                                        BlockAndPhotosValue after, const QString& text);
+QUndoCommand* setCutPhotoCommand(Document* document, CutPhotoValue before, CutPhotoValue after,
+                                 const QString& text);
 
 }  // namespace kerf

@@ -176,7 +176,19 @@ void MainWindow::createDocks() {
   controlsScroll->setFrameShape(QFrame::NoFrame);
   controlsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   controlsScroll->setMinimumWidth(cutControls_->minimumSizeHint().width() + 16);
-  cutLayout->addWidget(controlsScroll);
+  // Under the plane's controls, so the cut keeps its height: the photo of the real cut and how it is
+  // compared (filled by createControllers).
+  auto* controlsColumn = new QVBoxLayout;
+  controlsColumn->setContentsMargins(0, 0, 0, 0);
+  controlsColumn->setSpacing(0);
+  controlsColumn->addWidget(controlsScroll, 1);
+  cutBar_ = new QToolBar(cutPane);
+  cutBar_->setObjectName("cutPhotoBar");
+  cutDisplayBar_ = new QToolBar(cutPane);
+  cutDisplayBar_->setObjectName("cutDisplayBar");
+  controlsColumn->addWidget(cutBar_);
+  controlsColumn->addWidget(cutDisplayBar_);
+  cutLayout->addLayout(controlsColumn);
   cutLayout->addWidget(cutView_, 1);
   auto* cut = new QDockWidget(tr("Cut"), this);
   cut->setObjectName("cutDock");

@@ -34,6 +34,7 @@ namespace kerf {
 class AnnotationLayer;
 class BoardControls;
 class CutPlaneControls;
+class CutPhotoController;
 class CutView;
 class Document;
 class FacesView;
@@ -63,6 +64,7 @@ class MainWindow : public QMainWindow {
   LogBoardController* logBoard() const { return logBoard_; }
   ExportController* exports() const { return exports_; }
   FilesController* files() const { return files_; }
+  CutPhotoController* cutPhoto() const { return cutPhoto_; }
   // The start page, Open Photos, Reconstruct and the fit's quality in the status bar (work_path.hpp).
   WorkPath* workPath() const { return workPath_; }
 
@@ -178,6 +180,9 @@ class MainWindow : public QMainWindow {
   LogBoardController* logBoard_ = nullptr;
   ExportController* exports_ = nullptr;
   FilesController* files_ = nullptr;
+  CutPhotoController* cutPhoto_ = nullptr;
+  QToolBar* cutBar_ = nullptr;         // the cut photo's commands
+  QToolBar* cutDisplayBar_ = nullptr;  // what the cut shows
   WorkPath* workPath_ = nullptr;
 
   WindowLayout* layout_ = nullptr;

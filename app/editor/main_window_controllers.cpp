@@ -1,8 +1,11 @@
 // MainWindow: its controllers made on its views, their voices (log, message boxes, status bar) routed to
 // the window, and their news forwarded as the window's signals.
+#include <QActionGroup>
 #include <QStatusBar>
+#include <QToolBar>
 
 #include "appearance_controller.hpp"
+#include "cut_photo_controller.hpp"
 #include "faces_view.hpp"
 #include "main_window.hpp"
 #include "parameter_panel.hpp"
@@ -20,8 +23,14 @@ void MainWindow::createControllers(RenderSettings settings) {
       {logView_, boardControls_, knotTable_, panelControls_, panelPane_, viewport_, cutView_});
   exports_ = new ExportController(context, settings, viewport_);
   files_ = new FilesController(context, faces_);
+  cutPhoto_ = new CutPhotoController(context, cutView_);
+  cutBar_->addAction(cutPhoto_->loadAction());
+  cutBar_->addAction(cutPhoto_->alignAction());
+  cutBar_->addAction(cutPhoto_->removeAction());
+  cutDisplayBar_->addActions(cutPhoto_->displayGroup()->actions());
+  connect(appearance_, &AppearanceController::cutMade, cutPhoto_, &CutPhotoController::modelSideChanged);
   for (EditorController* controller : std::initializer_list<EditorController*>{
-           faces_, rings_, texture_, appearance_, logBoard_, exports_, files_})
+           faces_, rings_, texture_, appearance_, logBoard_, exports_, files_, cutPhoto_})
     connectController(controller);
   connect(facesView_, &FacesView::photoDropped, files_, &FilesController::dropPhoto);
   connect(facesView_, &FacesView::documentDropped, files_, &FilesController::openInstead);

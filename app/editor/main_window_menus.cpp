@@ -6,6 +6,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 
+#include "cut_photo_controller.hpp"
 #include "cut_view.hpp"
 #include "document.hpp"
 #include "faces_view.hpp"
@@ -58,6 +59,7 @@ void MainWindow::createFileMenu() {
       tr("Make the face images from your own photos of the block: mark each face's corners, turn it, "
          "white-balance it, and set the block's size"));
   importPhotosAction_->setStatusTip(importPhotosAction_->toolTip());
+  file->addAction(cutPhoto_->loadAction());
   createLogActions(file);  // main_window_work_menus.cpp
   file->addSeparator();
   QAction* saveAction = file->addAction(tr("&Save"), files_, [this] { files_->save(); });
@@ -94,6 +96,11 @@ void MainWindow::createViewMenu() {
       tr("Draw the ring traces (detected and your own) and knot marks over the faces"));
   connect(showContoursAction_, &QAction::toggled, facesView_, &FacesView::setOverlayVisible);
   view->addAction(cutView_->showRingUncertaintyAction());
+  QMenu* cut = view->addMenu(tr("C&ut Shows"));
+  cut->addActions(cutPhoto_->displayGroup()->actions());
+  cut->addSeparator();
+  cut->addAction(cutPhoto_->alignAction());
+  cut->addAction(cutPhoto_->removeAction());
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
   view->addAction(layout_->resetAction());

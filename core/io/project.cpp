@@ -125,6 +125,7 @@ json projectToJson(const Project& project, const fs::path& baseDir) {
   if (project.ringUncertainty) out["ring_uncertainty"] = ringUncertaintyToJson(*project.ringUncertainty);
   if (!project.heldOutFaces.empty()) out["held_out_faces"] = project.heldOutFaces.letters();
   if (project.appearance != Appearance::Procedural) out["appearance"] = appearanceName(project.appearance);
+  if (project.cutPhoto) out["cut_photo"] = cutPhotoToJson(*project.cutPhoto, baseDir);
   if (project.cutPlane) {
     out["view"] = {{"cut_plane",
                     {{"offset_mm", project.cutPlane->offsetMm},
@@ -194,6 +195,8 @@ Project projectFromJson(const json& in, const fs::path& baseDir) {
     if (!in["appearance"].is_string()) throw InputError("\"appearance\" must be \"procedural\" or \"photo\"");
     project.appearance = appearanceFromName(in["appearance"].get<std::string>());
   }
+  if (in.contains("cut_photo") && !in["cut_photo"].is_null())
+    project.cutPhoto = cutPhotoFromJson(in["cut_photo"], baseDir);
   if (in.contains("view") && in["view"].is_object() && in["view"].contains("cut_plane")) {
     const json& cut = in["view"]["cut_plane"];
     if (!cut.is_object()) throw InputError("\"view.cut_plane\" must be an object");

@@ -13,6 +13,7 @@
 #include "geometry/block.hpp"
 #include "geometry/cut_plane.hpp"
 #include "geometry/face_set.hpp"
+#include "io/cut_photo.hpp"
 #include "io/project_log.hpp"
 #include "params/parameter_json.hpp"  // the parameters alone, as projects store them
 #include "params/parameter_schema.hpp"
@@ -59,6 +60,9 @@ struct Project {
   FaceSet heldOutFaces;
   // Optional key "appearance" ("photo"); absent when procedural.
   Appearance appearance = Appearance::Procedural;
+  // A photo of the real cut, aligned to the model's cut on its plane (io/cut_photo.hpp). Optional key
+  // "cut_photo"; its file relative to the project where it can be.
+  std::optional<CutPhoto> cutPhoto;
 
   // The ring uncertainty when it belongs to the current field (not stale after a refit or an edit).
   const RingUncertainty* currentRingUncertainty() const;
