@@ -38,7 +38,7 @@ std::shared_ptr<const PhotoTrueSurfaces> makeSource(std::shared_ptr<const WoodMo
   source->model = std::move(model);
   // The model's seed, as kerf-cli's render-faces, render-cut and export: the same surfaces everywhere.
   source->appearance = std::make_unique<const PhotoTrueAppearance>(
-      *source->model, images, heldOut, photoTrueOptionsFor(*source->model), progress);
+      *source->model, std::move(images), heldOut, photoTrueOptionsFor(*source->model), progress);
   return source;
 }
 

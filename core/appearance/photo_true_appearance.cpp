@@ -100,7 +100,7 @@ std::uint32_t planeSalt(const CutPlane& plane, float pxPerMm) {
 
 }  // namespace
 
-PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, const std::array<Image, 6>& photos,
+PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, std::array<Image, 6> photos,
                                          const FaceSet& heldOut, const PhotoTrueOptions& options,
                                          const Progress& progress)
     : model_(model), options_(options) {
@@ -125,14 +125,15 @@ PhotoTrueAppearance::PhotoTrueAppearance(const WoodModel& model, const std::arra
   for (std::size_t i = 0; i < faces_.size(); ++i) {
     progress.throwIfCancelled();
     const FaceId face = faces_[i];
-    const Image& photo = photos[faceIndex(face)];
+    Image& photo = photos[faceIndex(face)];
     Exemplar exemplar;
     const glm::ivec2 size = block.faceImageSize(face, pxPerMm_);
     if (std::abs(densities[i] / pxPerMm_ - 1.0f) < 0.01f && size == glm::ivec2(photo.width, photo.height)) {
-      exemplar.colour = photo;
+      exemplar.colour = std::move(photo);
     } else {
       exemplar.colour = Image(size.x, size.y, 3);
       resampleInto(photo, {float(photo.width) / size.x, float(photo.height) / size.y}, exemplar.colour);
+      photo = Image{};
     }
     exemplar.guidance = computeGuidance(model, faceGrid(block, face, size), options.weights);
     exemplars.push_back(std::move(exemplar));
