@@ -14,10 +14,11 @@ namespace kerf::cli {
 
 Command addExportCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
-      "export", "Export a face or cut image (" + extensionWords(ExportKind::Image) + "), a volume (" +
-                    extensionWords(ExportKind::Volume) + "), a depth stack (folder) or a textured part (" +
-                    extensionWords(ExportKind::Part) +
-                    " with --mesh), in the project's appearance (a colour volume is always procedural)");
+      "export",
+      "Export a face or cut image (" + extensionWords(ExportKind::Image) + "), a volume (" +
+          extensionWords(ExportKind::Volume) + "), a depth stack (folder) or a textured part (" +
+          extensionWords(ExportKind::Part) +
+          " with --mesh), in the project's appearance (procedural or photo-true, colour volumes too)");
   struct Options {
     std::string document, out, face, plane, layer = "colour", exrType = "half", quantity = "growth",
                                             depthStack, mesh, place, rotate;

@@ -117,7 +117,8 @@ Command addTextureCommand(CLI::App& app) {
           "--appearance", o->appearance,
           "procedural (default): infer the procedural model's detail from the photos (minutes). photo: "
           "make every surface of the project's own photos, re-grown along the fitted field (issue 17, "
-          "docs/texture.md); stored in the project, used by render-faces and render-cut; the "
+          "docs/texture.md); stored in the project, used by render-faces, render-cut and export (colour "
+          "volumes too); the "
           "procedural parameters are kept as they are")
       ->check(CLI::IsMember({"procedural", "photo"}));
   texture->add_flag("--no-coarse", o->noCoarse, "Skip the coarse size grid");
