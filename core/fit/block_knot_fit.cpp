@@ -381,7 +381,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
                      std::log(static_cast<double>(b.speed))};
   }
   double kStem = settings.knotSmoothStem;
-  const BlockKnots initialKnots(initial, settings, stem.ringWidth());
+  const BlockKnots initialKnots(initial, settings, stem.ringWidth(), pith.direction);
   std::vector<double> levels(contours.count(), 0.0);
   ceres::Problem problem;
   std::vector<bool> knotInProblem(initial.size(), false);
@@ -541,7 +541,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
   }
   KnotSettings fittedSettings = settings;
   fittedSettings.knotSmoothStem = out.kStem;
-  const BlockKnots fittedKnots(fitted, fittedSettings, stem.ringWidth());
+  const BlockKnots fittedKnots(fitted, fittedSettings, stem.ringWidth(), pith.direction);
   std::vector<double> withInitial(n), withFitted(n);
   for (int i = 0; i < n; ++i) {
     const float g = static_cast<float>(stemTime[i]);
