@@ -91,6 +91,10 @@ void printBlockLine(const BedBlockResult& b) {
     std::printf(" knot %d speed %.3f (initial %.3f), taper %.3f at %.1f years, k_stem %.2f, moved %.2f deg;",
                 e.id, e.fitted.speed, e.initial.speed, e.fitted.taper, e.fitted.taperAge, r.knotSmoothStem,
                 e.axisMovedDeg);
+  for (const BlockKnotFitEntry& e : r.knots)
+    if (e.fitted.dead())  // issue 19: dead where it stopped thickening, in years and mm from the pith
+      std::printf(" knot %d dead from %.1f years (%.1f mm at the fitted ring width);", e.id,
+                  e.fitted.deathTime, e.fitted.deathTime * r.ringWidthMm);
   if (r.knotColour.fitted)
     std::printf(" knots.darkening fitted %.3f, %.3f, %.3f;", r.knotColour.darkening.x,
                 r.knotColour.darkening.y, r.knotColour.darkening.z);

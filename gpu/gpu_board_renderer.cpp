@@ -29,6 +29,7 @@ constexpr int kTilesUnit = KnotTables::kTextureCount;
 GpuBoardRenderer::GpuBoardRenderer() : program_(std::make_unique<QOpenGLShaderProgram>()) {
   const QString vertex = "#version 330 core\n" + WoodProgram::shaderFile("image_plane.vert");
   const QString fragment = "#version 330 core\n" + WoodProgram::parameterDeclarations() +
+                           WoodProgram::shaderFile("knot_death.glsl") +
                            WoodProgram::shaderFile("knots.glsl") + "\n#line 1 1\n" +
                            WoodProgram::shaderFile("board_knots.frag");
   if (!program_->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||

@@ -5,6 +5,7 @@
 #include <QOpenGLExtraFunctions>
 #include <QVector3D>
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "params/parameter_schema.hpp"
@@ -34,7 +35,8 @@ QString WoodProgram::fragmentSource(const QString& fragmentFile, WoodSource sour
   if (source == WoodSource::Board) text += "#define KERF_BOARD_WOOD 1\n";
   // The model's single-source kernels (core/model/kernels) around the GPU back-end (wood_model.glsl).
   text += parameterDeclarations() + QString("const int kMaxBlockKnots = %1;\n").arg(kMaxBlockKnotsOnGpu) +
-          shaderFile("kernels/noise.glsl") + shaderFile("wood_model.glsl") + shaderFile("kernels/wood.glsl");
+          shaderFile("kernels/noise.glsl") + shaderFile("knot_death.glsl") + shaderFile("wood_model.glsl") +
+          shaderFile("kernels/wood.glsl");
   if (source == WoodSource::Board) text += shaderFile("knots.glsl") + shaderFile("board_wood.glsl");
   return text + "\n#line 1 1\n" + shaderFile(fragmentFile);
 }
@@ -85,6 +87,11 @@ void WoodProgram::setModel(const WoodModel& model) {
     program_.setUniformValue(("u_blockKnotSpeed" + index).constData(), knots[i].speed);
     program_.setUniformValue(("u_blockKnotTaper" + index).constData(), knots[i].taper);
     program_.setUniformValue(("u_blockKnotTaperAge" + index).constData(), knots[i].taperAge);
+    // Alive (infinity) as the largest float: a uniform's infinity is not portable GLSL 3.30.
+    program_.setUniformValue(("u_blockKnotDeath" + index).constData(),
+                             std::min(knots[i].deathTime, std::numeric_limits<float>::max()));
+    program_.setUniformValue(("u_blockKnotUp" + index).constData(), toQt(model.knots().up(i)));
+    program_.setUniformValue(("u_blockKnotSide" + index).constData(), toQt(model.knots().side(i)));
   }
 
   const GrowthRates& rates = field.rates();

@@ -124,12 +124,8 @@ float knotAdaptiveK(float stemTime, float knotTime) {
   return 0.5 * (P.knotSmoothKnot + P.knotSmoothStem) + 0.5 * (P.knotSmoothKnot - P.knotSmoothStem) * sig;
 }
 
-// Sec. 4.2.2 (deadKnotFactor).
-float knotDeadFactor(float tau, float beta) {
-  float wing = 1.0 - P.knotButterfly * cos(2.0 * beta);
-  float progress = 1.0 - exp(-P.knotDeadTransition * max(tau, 0.0));
-  return 1.0 + (P.knotDeadInversion * wing - 1.0) * progress;
-}
+// Sec. 4.2.2: knotDeadFactor, applyKnotDeath and the outline and shade of Sec. 4.3 are knot_death.glsl's,
+// shared with the block's knots (assembled ahead of this file).
 
 float knotWindow(float ratio) {
   if (ratio >= P.knotReachEnd) return 0.0;
@@ -195,17 +191,10 @@ KnotSample evaluateKnots(vec3 p, int first, int count) {
     float delta = tAlive - min(ts, tb);
     if (ts > tDeath && ratio < P.knotReachStart) {
       float width = P.knotOutlineWidth * (1.0 + P.knotOutlineNoise * noise.y);
-      if (abs(tb - tDeath) < width) r.outline = true;
+      if (inDeadKnotOutline(ts, tb, tDeath, width)) r.outline = true;
     }
-    if (tAlive > tDeath) {
-      float tau = ts - tDeath;
-      tb += tau;
-      float kDead = k + P.knotDeadSharpening * tau;
-      delta = knotDeadFactor(tau, beta) * (knotPowerSmoothMin(ts, tb, kDead) - min(ts, tb));
-    }
-    if (ts > tDeath && tb < ts) {
-      r.deadShade = max(r.deadShade, min(1.0, 3.0 * (ts - tDeath)) * P.knotDeadDarkening);
-    }
+    applyKnotDeath(ts, tAlive, tDeath, k, beta, tb, delta);  // Eq. 5
+    r.deadShade = max(r.deadShade, deadKnotShade(ts, tb, tDeath));
     knotMin = min(knotMin, tb);
     sumDelta += window * delta;
     float inside = 1.0 - knotSmoothstep01((tb / ts - (1.0 - P.knotEdgeSoftness)) / max(P.knotEdgeSoftness, 1e-4));

@@ -105,12 +105,19 @@ uniform vec3 u_blockKnotDirection[kMaxBlockKnots];  // unit
 uniform float u_blockKnotSpeed[kMaxBlockKnots];
 uniform float u_blockKnotTaper[kMaxBlockKnots];     // BlockKnot::taper (0: the cone of Eq. 7)
 uniform float u_blockKnotTaperAge[kMaxBlockKnots];  // years
+uniform float u_blockKnotDeath[kMaxBlockKnots];     // BlockKnot::deathTime, years; a huge number: alive
+uniform vec3 u_blockKnotUp[kMaxBlockKnots];         // BlockKnots::up/side: the frame of beta (knotAngleOf)
+uniform vec3 u_blockKnotSide[kMaxBlockKnots];
+// knotSmoothMinOf (Eq. 2) and the dead knot's Eq. 5 and Sec. 4.3: knot_death.glsl, assembled ahead.
 
-// Eq. 2 (powerSmoothMinOf).
-float blockKnotSmoothMin(float a, float b, float k) {
-  float m = b < a ? b : a, M = a < b ? b : a;
-  if (!(m > 0.0)) return max(m, 0.0);
-  return m * pow(1.0 + pow(m / M, k), -1.0 / k);
+// knotAngleOf: beta around the knot's axis, 0 beside it, pi/2 towards the pith axis' direction.
+float blockKnotAngle(int i, vec3 p) {
+  vec3 rel = p - u_blockKnotOrigin[i];
+  vec3 u = u_blockKnotDirection[i];
+  float along = rel.x * u.x + rel.y * u.y + rel.z * u.z;
+  vec3 r = rel - along * u;
+  vec3 up = u_blockKnotUp[i], side = u_blockKnotSide[i];
+  return atan(r.x * up.x + r.y * up.y + r.z * up.z, r.x * side.x + r.y * side.y + r.z * side.z);
 }
 
 // Distance to the knot's half-line (knotAxisDistance).
@@ -121,7 +128,8 @@ float blockKnotDistance(int i, vec3 p) {
   return sqrt(dot(d, d));
 }
 
-// knotSpeedAt: the knot's speed at stem time G, tapering (issue 19 item 2), capped below the reach.
+// knotSpeedAt: the knot's speed at stem time G, tapering (issue 19 item 2), capped below the reach; a dead
+// knot's is the one of its death (the caller passes min(G, death)).
 float blockKnotSpeed(int i, float stemTime) {
   float taper = u_blockKnotTaper[i];
   if (!(taper != 0.0)) return u_blockKnotSpeed[i];
@@ -129,11 +137,12 @@ float blockKnotSpeed(int i, float stemTime) {
   return min(v, 0.9 * min(P.knotReachStart, P.knotReachEnd));
 }
 
-// BlockKnots::merge: G_k from the stem time; darkness for Sec. 4.3.
-float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkness) {
+// BlockKnots::merge (with knotTerm): G_k from the stem time; darkness and shade for Sec. 4.3.
+float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkness, out float shade) {
   darkness = 0.0;
+  shade = 1.0;
   if (u_blockKnotCount == 0 || !(stemRadius > 1e-3)) return stemTime;
-  float knotMin = stemTime, sumSmoothing = 0.0;
+  float knotMin = stemTime, sumSmoothing = 0.0, deadShade = 0.0;
   int inReach = 0;
   for (int i = 0; i < u_blockKnotCount; ++i) {
     float distance = blockKnotDistance(i, p);
@@ -144,20 +153,46 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
       float x = clamp((ratio - P.knotReachStart) / (P.knotReachEnd - P.knotReachStart), 0.0, 1.0);
       window = 1.0 - x * x * (3.0 - 2.0 * x);
     }
-    float time = distance / (blockKnotSpeed(i, stemTime) * P.ringWidth);
+    float deathTime = u_blockKnotDeath[i];
+    bool dead = deathTime < 1e30;
+    float speed = blockKnotSpeed(i, min(stemTime, deathTime));
+    float time = distance / (speed * P.ringWidth);
+    float m = time < stemTime ? time : stemTime;
+    float alive = knotSmoothMinOf(stemTime, time, P.knotSmoothStem);
+    float delta = alive - m;
+    float frozen = time;
+    if (deathTime < stemTime) {
+      // Eq. 5 in Larsson's stem time (stemTimePerYear), and back to years.
+      float c = P.ringWidth / P.knotStemRadius;
+      float knotTime = time * c;
+      float deadDelta = delta * c;
+      if (applyKnotDeath(stemTime * c, m * c, deathTime * c, P.knotSmoothStem, blockKnotAngle(i, p), knotTime,
+                         deadDelta)) {
+        time = knotTime / c;
+        delta = deadDelta / c;
+      }
+    }
     knotMin = min(knotMin, time);
-    sumSmoothing += window * (blockKnotSmoothMin(stemTime, time, P.knotSmoothStem) - min(time, stemTime));
+    sumSmoothing += window * delta;
+    if (dead) {
+      float c = P.ringWidth / P.knotStemRadius;
+      float ts = stemTime * c, tDeath = deathTime * c;
+      if (distance < P.knotReachStart * stemRadius && inDeadKnotOutline(ts, frozen * c, tDeath, P.knotOutlineWidth))
+        shade = P.knotOutlineShade;
+      deadShade = max(deadShade, deadKnotShade(ts, time * c, tDeath));
+    }
     if (stemTime > 0.0) {
       float e = clamp((time / stemTime - (1.0 - P.knotEdgeSoftness)) / max(P.knotEdgeSoftness, 1e-4), 0.0, 1.0);
       darkness = max(darkness, window * (1.0 - e * e * (3.0 - 2.0 * e)));
     }
     ++inReach;
   }
+  darkness += deadShade;
   return inReach > 0 ? max(knotMin + sumSmoothing, 0.0) : stemTime;
 }
 
 // The back-end functions core/model/kernels/wood.glsl calls.
 float growthAt(Cylindrical c) { return growthField(c); }
-float mergeKnots(vec3 p, float stemTime, float stemRadius, out float darkness) {
-  return mergeBlockKnots(p, stemTime, stemRadius, darkness);
+float mergeKnots(vec3 p, float stemTime, float stemRadius, out float darkness, out float shade) {
+  return mergeBlockKnots(p, stemTime, stemRadius, darkness, shade);
 }

@@ -14,10 +14,16 @@
 // window of knots.reach_start / reach_end on d_k / d_s (d_s the distance from the pith axis), and
 // many knots merged as in Eq. 6: t = min(G, T_1..T_n) + sum_i window_i (smin_i - min_i). Beyond
 // reach_end a knot is skipped, so there G_k equals G bit for bit. The knot is darkened by
-// knots.darkening (Sec. 4.3). Mokume models only alive knots with straight axes (Sec. 7); so does this.
+// knots.darkening (Sec. 4.3). Mokume models only alive knots with straight axes (Sec. 7); Kerf adds
+// dead knots (issue 19): from BlockKnot::deathTime on, Larsson et al. 2022 Sec. 4.2.2 Eq. 5 and Sec. 4.3
+// as the log applies them (field/knot_field.hpp applyKnotDeath, deadKnotShade, inDeadKnotOutline), in
+// stem time = G w / knots.stem_radius. The knot stops thickening, the stem's rings are no longer
+// continuous with it (it is encased: G_k jumps at its surface), the sweep inverts (the butterfly), and it
+// gets the dead darkening and the dark bark ring (no outline noise: a block knot has no noise tables).
 #include <algorithm>
 #include <cmath>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +43,11 @@ struct BlockKnot {
   // that stopped thickening, as a dead one does.
   float taper = 0.0f;
   float taperAge = 10.0f;  // the stem time G (years from the pith) at which v_k = speed
+  // The stem time G (years from the pith) at which the branch died; infinity: alive. After it the knot
+  // keeps the section it had (its speed and taper are those of its death) and is encased (Eq. 5).
+  float deathTime = std::numeric_limits<float>::infinity();
+
+  bool dead() const { return std::isfinite(deathTime); }
 
   bool operator==(const BlockKnot&) const = default;
 };
@@ -68,7 +79,8 @@ inline float maxKnotSpeed(const KnotSettings& s) {
 inline constexpr std::size_t kMaxBlockKnots = 1'000;
 
 // Throws InputError naming `what` (e.g. "knots[1]") for a non-finite or zero direction, a speed outside
-// (0, 1), a taper outside [-kMaxKnotTaper, kMaxKnotTaper] or a taper age that is not positive.
+// (0, 1), a taper outside [-kMaxKnotTaper, kMaxKnotTaper], a taper age that is not positive or a death
+// time that is not positive (infinity: alive).
 void validate(const BlockKnot& knot, const std::string& what);
 
 // The distance from p to the knot's half-line, for any scalar type (Ceres Jets in the fit).
@@ -91,9 +103,23 @@ struct KnotTerm {
   T smoothing;
   T window;
 };
+// The knot's dead-knot state at a point (BlockKnot::deathTime): the death time and the angle beta around
+// the knot axis (0 = sideways, pi/2 = towards the pith axis' direction, Larsson's "above"). An alive
+// knot has deathTime = infinity and beta is not used.
+template <typename T>
+struct KnotDeathAt {
+  T deathTime;
+  T beta;
+};
+// Years to Larsson's stem time (0 at the pith, 1 at the bark): G w / knots.stem_radius.
+inline float stemTimePerYear(float ringWidth, const KnotSettings& s) {
+  return ringWidth / s.knotStemRadius;
+}
+
 template <typename T>
 KnotTerm<T> knotTerm(const T& stemTime, const T& knotDistance, const T& stemRadius, const T& speed,
-                     float ringWidth, const T& kStem, const KnotSettings& s) {
+                     float ringWidth, const T& kStem, const KnotSettings& s,
+                     const KnotDeathAt<T>& death = {T(std::numeric_limits<float>::infinity()), T(0)}) {
   KnotTerm<T> out{T(0), T(0), T(0)};
   if (!(stemRadius > T(1e-3f))) return out;
   out.window = knotWindowOf(knotDistance / stemRadius, s.knotReachStart, s.knotReachEnd);
@@ -103,32 +129,69 @@ KnotTerm<T> knotTerm(const T& stemTime, const T& knotDistance, const T& stemRadi
   // where k switches from k_knot to k_stem at the knot's edge, G_k falls by up to 0.13 years moving
   // outward (measured with the schema defaults), and rings would fold there.
   const T m = out.time < stemTime ? out.time : stemTime;
-  out.smoothing = out.window * (powerSmoothMinOf(stemTime, out.time, kStem) - m);  // Eq. 2-3
+  const T alive = powerSmoothMinOf(stemTime, out.time, kStem);
+  T delta = alive - m;  // Eq. 2-3
+  if (death.deathTime < stemTime) {
+    // Eq. 5 in Larsson's stem time (the log's code), and back to years. Where the log tests its union
+    // (adaptive k, near k_knot = 5 inside a knot: almost the minimum) against the death, the block tests the
+    // minimum itself: with its one soft k (fitted near 1) the union would let a dead knot thicken on by a
+    // third. So the knot's section stays exactly that of its death, and G_k is continuous outside it.
+    const float c = stemTimePerYear(ringWidth, s);
+    T knotTime = out.time * T(c);
+    T deadDelta = delta * T(c);
+    if (applyKnotDeath(stemTime * T(c), m * T(c), death.deathTime * T(c), kStem, death.beta, s, knotTime,
+                       deadDelta)) {
+      out.time = knotTime / T(c);
+      delta = deadDelta / T(c);
+    }
+  }
+  out.smoothing = out.window * delta;
   return out;
 }
 
 struct BlockKnotSample {
   float time = 0;      // G_k (years)
-  float darkness = 0;  // 0..1, the share of knots.darkening to subtract (Sec. 4.3)
+  float darkness = 0;  // the share of knots.darkening to subtract (Sec. 4.3): 0..1, plus a dead knot's shade
+  float shade = 1;     // colour factor: knots.outline_shade inside a dead knot's bark ring, else 1 (Sec. 4.3)
   int knotsInReach = 0;
 };
+
+// The angle around the knot's axis of the point `rel` (from the knot's origin), 0 beside it, pi/2 along
+// `up` (the pith axis made perpendicular to the knot): Larsson's beta (Sec. 4.2.2), for the butterfly.
+template <typename T>
+T knotAngleOf(const T* rel, const T* unitDirection, const glm::vec3& up, const glm::vec3& side) {
+  using std::atan2;
+  const T along = rel[0] * unitDirection[0] + rel[1] * unitDirection[1] + rel[2] * unitDirection[2];
+  T r[3];
+  for (int i = 0; i < 3; ++i) r[i] = rel[i] - along * unitDirection[i];
+  return atan2(r[0] * T(up.x) + r[1] * T(up.y) + r[2] * T(up.z),
+               r[0] * T(side.x) + r[1] * T(side.y) + r[2] * T(side.z));
+}
+// `up` and `side` of a knot direction and the pith axis direction (both unit).
+void knotFrame(const glm::vec3& direction, const glm::vec3& pithDirection, glm::vec3& up, glm::vec3& side);
 
 // The knots of one block with the settings they are merged with. Immutable and thread-safe.
 class BlockKnots {
  public:
   BlockKnots() = default;
-  BlockKnots(std::vector<BlockKnot> knots, const KnotSettings& settings, float ringWidthMm);
+  // pithDirection: the growth field's pith axis (unit), "up" for the butterfly of dead knots.
+  BlockKnots(std::vector<BlockKnot> knots, const KnotSettings& settings, float ringWidthMm,
+             glm::vec3 pithDirection = glm::vec3(0, 0, 1));
 
   bool empty() const { return knots_.empty(); }
   const std::vector<BlockKnot>& knots() const { return knots_; }
   const KnotSettings& settings() const { return settings_; }
   float ringWidth() const { return ringWidth_; }
+  // Per knot, its frame for beta (knotAngleOf): what the shaders get as uniforms.
+  const glm::vec3& up(std::size_t knot) const { return up_[knot]; }
+  const glm::vec3& side(std::size_t knot) const { return side_[knot]; }
 
   // G_k at p (block mm) from the stem time G(p) and the distance of p from the pith axis (mm).
   BlockKnotSample merge(const glm::vec3& p, float stemTime, float stemRadius) const;
 
  private:
   std::vector<BlockKnot> knots_;
+  std::vector<glm::vec3> up_, side_;
   KnotSettings settings_;
   float ringWidth_ = 1.0f;
 };

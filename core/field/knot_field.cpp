@@ -82,9 +82,7 @@ float adaptiveK(float stemTime, float knotTime, const KnotSettings& s) {
 
 // Sec. 4.2.2.
 float deadKnotFactor(float tau, float beta, const KnotSettings& s) {
-  const float wing = 1.0f - s.knotButterfly * std::cos(2.0f * beta);  // 1 + b above/below, 1 - b at the sides
-  const float progress = 1.0f - std::exp(-s.knotDeadTransition * std::max(tau, 0.0f));
-  return 1.0f + (s.knotDeadInversion * wing - 1.0f) * progress;
+  return deadKnotFactorOf(tau, beta, s);
 }
 
 float knotWindow(float ratio, const KnotSettings& s) {
@@ -204,19 +202,12 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
     if (ts > tDeath && ratio < s.knotReachStart) {
       const float width =
           s.knotOutlineWidth * (1.0f + s.knotOutlineNoise * noiseAt(outlineNoise_, index, beta, ts));
-      if (std::abs(tb - tDeath) < width) out.outline = true;
+      if (inDeadKnotOutline(ts, tb, tDeath, width)) out.outline = true;
     }
-    if (tAlive > tDeath) {
-      // Dead (Eq. 5, Sec. 4.2.2): the knot stops thickening (its time now keeps pace with the stem's), the
-      // union sharpens with the time since death, and the smoothing is scaled by f (inverted, butterfly).
-      const float tau = ts - tDeath;
-      tb += tau;
-      delta = deadKnotFactor(tau, beta, s) * smoothingAmount(ts, tb, k + s.knotDeadSharpening * tau);
-    }
+    // Dead (Eq. 5, Sec. 4.2.2): the knot stops thickening, its union with the stem sharpens and inverts.
+    applyKnotDeath(ts, tAlive, tDeath, k, beta, s, tb, delta);
     // Sec. 4.3: a dead knot, where the stem grew on after its death, is darker.
-    if (ts > tDeath && tb < ts) {
-      out.deadShade = std::max(out.deadShade, std::min(1.0f, 3.0f * (ts - tDeath)) * s.knotDeadDarkening);
-    }
+    out.deadShade = std::max(out.deadShade, deadKnotShade(ts, tb, tDeath, s));
     knotMin = std::min(knotMin, tb);
     sumDelta += window * delta;  // Eq. 6, the sum of the pairwise smoothing amounts
     const float inside =

@@ -14,6 +14,7 @@
 // Every per-knot term is multiplied by a window that is exactly 0 once the distance d_b from the knot's
 // pseudo-nearest skeleton point reaches knots.reach_end x d_s, and beyond it T_b > t_s, so a knot farther
 // than that changes nothing, bit for bit. cull() uses that bound to list the knots that can reach a region.
+#include <algorithm>
 #include <cmath>
 #include <glm/vec3.hpp>
 #include <span>
@@ -61,6 +62,42 @@ T knotWindowOf(const T& ratio, float reachStart, float reachEnd) {
   T x = (ratio - T(reachStart)) / T(reachEnd - reachStart);
   x = x < T(0) ? T(0) : (T(1) < x ? T(1) : x);
   return T(1) - x * x * (T(3) - T(2) * x);
+}
+// Sec. 4.2.2, deadKnotFactor for any scalar type (the block-knot fit's Jets): the one implementation.
+template <typename T>
+T deadKnotFactorOf(const T& tau, const T& beta, const KnotSettings& s) {
+  using std::cos;
+  using std::exp;
+  const T wing = T(1.0f) - T(s.knotButterfly) * cos(T(2.0f) * beta);  // 1 + b above/below, 1 - b at the sides
+  const T progress = T(1.0f) - exp(-T(s.knotDeadTransition) * (tau > T(0.0f) ? tau : T(0.0f)));
+  return T(1.0f) + (T(s.knotDeadInversion) * wing - T(1.0f)) * progress;
+}
+// Eq. 5 (Sec. 4.2.2), shared by the log (KnotField::evaluate) and the block's knots (BlockKnots::merge),
+// all in stem time: where the alive union tAlive = smin(t_s, T_b, k) is later than the death time, the
+// knot stops thickening (T_b += tau, tau = t_s - t_death: its section stays that of its death), the union
+// sharpens (k + dead_sharpening tau) and the smoothing is scaled by f (inverted, butterfly). Returns
+// whether the point lies past the death; then knotTime and delta are replaced.
+template <typename T>
+bool applyKnotDeath(const T& ts, const T& tAlive, const T& tDeath, const T& k, const T& beta,
+                    const KnotSettings& s, T& knotTime, T& delta) {
+  if (!(tAlive > tDeath)) return false;
+  const T tau = ts - tDeath;
+  knotTime += tau;
+  const T m = knotTime < ts ? knotTime : ts;
+  delta = deadKnotFactorOf(tau, beta, s) *
+          (powerSmoothMinOf(ts, knotTime, T(k + T(s.knotDeadSharpening) * tau)) - m);
+  return true;
+}
+// Sec. 4.3: inside the dark outline (bark ring) of a dead knot: on wood grown after the death, where the
+// knot's surface froze (|T_b - t_death| < width, T_b the knot time before Eq. 5 moves it).
+inline bool inDeadKnotOutline(float ts, float tb, float tDeath, float width) {
+  return ts > tDeath && std::abs(tb - tDeath) < width;
+}
+// Sec. 4.3: the extra darkening of a dead knot's wood grown after its death (tb: the knot time after
+// Eq. 5), growing over the first third of a stem-time unit.
+inline float deadKnotShade(float ts, float tb, float tDeath, const KnotSettings& s) {
+  if (!(ts > tDeath && tb < ts)) return 0.0f;
+  return std::min(1.0f, 3.0f * (ts - tDeath)) * s.knotDeadDarkening;
 }
 // Eq. 3, the amount of smoothing smin - min (<= 0: the union pushes the rings outward).
 float smoothingAmount(float a, float b, float k);

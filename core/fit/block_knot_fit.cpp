@@ -19,31 +19,54 @@ namespace kerf {
 namespace {
 
 constexpr float kMinSpeed = 0.02f;
+constexpr double kAliveDeath = 1e30;      // the death parameter of an alive knot (held)
+constexpr double kMinDeath = 1.0;         // years: a branch lives a year at least
 constexpr int kFarPointsPerContour = 16;  // anchor each contour's level away from the knot
 
-// One contour point near a knot: its G_k (one knot merged into the fixed stem time, Eq. 7 and Eq. 6)
-// against its contour's free level.
+// A knot's fixed frame for the angle beta of a dead knot's butterfly (knotAngleOf), from its initial axis.
+struct KnotFrame {
+  glm::vec3 up{0, 0, 1}, side{1, 0, 0};
+};
+
+// G_k of one knot at p (Eq. 7 and Eq. 6) from the stem time and radius, for the residuals below.
 // Parameter blocks per knot: `knot` = origin (3), direction (3), log speed; `taper` = BlockKnot::taper,
-// with the knot's taper age fixed.
+// with the knot's taper age fixed; `death` = BlockKnot::deathTime (years; 1e30 and held: alive).
+template <typename T>
+T mergedNearKnot(const glm::vec3& p, const T& stem, const T& radius, const T* knot, const T* taper,
+                 const T* death, const T& kStem, float ringWidth, float taperAge, const KnotFrame& frame,
+                 const KnotSettings& settings) {
+  using std::exp;
+  using std::sqrt;
+  const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
+  const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
+  const T distance = knotAxisDistance(knot, direction, p);
+  const T growing = stem < death[0] ? stem : death[0];  // a dead knot keeps the speed of its death
+  const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, growing, maxKnotSpeed(settings));
+  KnotDeathAt<T> dead{death[0], T(0)};
+  if (death[0] < stem) {
+    const T rel[3] = {T(p.x) - knot[0], T(p.y) - knot[1], T(p.z) - knot[2]};
+    dead.beta = knotAngleOf(rel, direction, frame.up, frame.side);
+  }
+  const KnotTerm<T> term = knotTerm(stem, distance, radius, speed, ringWidth, kStem, settings, dead);
+  if (!(term.window > T(0))) return stem;
+  return (term.time < stem ? term.time : stem) + term.smoothing;
+}
+
+// One contour point near a knot: its G_k (one knot merged into the fixed stem time) against its
+// contour's free level.
 struct NearPointResidual {
   glm::vec3 p;
   double stemTime;
   float stemRadius, ringWidth, taperAge;
+  KnotFrame frame;
   const KnotSettings* settings;
 
   template <typename T>
-  bool operator()(const T* knot, const T* taper, const T* kStem, const T* level, T* residual) const {
-    using std::exp;
-    using std::sqrt;
-    const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
-    const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
-    const T distance = knotAxisDistance(knot, direction, p);
-    const T stem(stemTime);
-    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, stem, maxKnotSpeed(*settings));
-    const KnotTerm<T> term = knotTerm(stem, distance, T(stemRadius), speed, ringWidth, kStem[0], *settings);
-    T merged = stem;
-    if (term.window > T(0)) merged = (term.time < stem ? term.time : stem) + term.smoothing;
-    residual[0] = merged - level[0];
+  bool operator()(const T* knot, const T* taper, const T* death, const T* kStem, const T* level,
+                  T* residual) const {
+    residual[0] = mergedNearKnot(p, T(stemTime), T(stemRadius), knot, taper, death, kStem[0], ringWidth,
+                                 taperAge, frame, *settings) -
+                  level[0];
     return true;
   }
 };
@@ -74,23 +97,17 @@ void undeformedStem(const T* pith, const glm::vec3& p, float ringWidth, T& time,
 struct JointNearResidual {
   glm::vec3 p;
   float ringWidth, taperAge;
+  KnotFrame frame;
   const KnotSettings* settings;
 
   template <typename T>
-  bool operator()(const T* pith, const T* knot, const T* taper, const T* kStem, const T* level,
-                  T* residual) const {
-    using std::exp;
-    using std::sqrt;
+  bool operator()(const T* pith, const T* knot, const T* taper, const T* death, const T* kStem,
+                  const T* level, T* residual) const {
     T stem, radius;
     undeformedStem(pith, p, ringWidth, stem, radius);
-    const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
-    const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
-    const T distance = knotAxisDistance(knot, direction, p);
-    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, stem, maxKnotSpeed(*settings));
-    const KnotTerm<T> term = knotTerm(stem, distance, radius, speed, ringWidth, kStem[0], *settings);
-    T merged = stem;
-    if (term.window > T(0)) merged = (term.time < stem ? term.time : stem) + term.smoothing;
-    residual[0] = merged - level[0];
+    residual[0] =
+        mergedNearKnot(p, stem, radius, knot, taper, death, kStem[0], ringWidth, taperAge, frame, *settings) -
+        level[0];
     return true;
   }
 };
@@ -135,18 +152,20 @@ struct MarkResidual {
 
 // Issue 19 item 2: a point of the knot's edge seen on a photo (rings/knot_outline.hpp) lies on the knot's
 // surface, where its own time equals the stem's (T_k = d_k / (v w) = G: Eq. 7's two arguments equal). In
-// the stem's ring spacings, as the contours' residuals: (d_k - v_k(G) w G) / w.
+// the stem's ring spacings, as the contours' residuals: (d_k - v_k(G) w G) / w. A dead knot's surface
+// stays where it was at its death (Eq. 5): G is then the death time.
 struct EdgeGeometry {
   glm::vec3 p;
   float ringWidth, taperAge, maxSpeed;
   template <typename T>
-  T gap(const T* knot, const T* taper, const T& stemTime) const {
+  T gap(const T* knot, const T* taper, const T* death, const T& stemTime) const {
     using std::exp;
     using std::sqrt;
     const T norm = sqrt(knot[3] * knot[3] + knot[4] * knot[4] + knot[5] * knot[5]);
     const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
-    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, stemTime, maxSpeed);
-    return knotAxisDistance(knot, direction, p) / T(ringWidth) - speed * stemTime;
+    const T grown = stemTime < death[0] ? stemTime : death[0];
+    const T speed = taperedKnotSpeed(exp(knot[6]), taper[0], taperAge, grown, maxSpeed);
+    return knotAxisDistance(knot, direction, p) / T(ringWidth) - speed * grown;
   }
 };
 
@@ -154,8 +173,8 @@ struct KnotEdgeResidual {
   EdgeGeometry edge;
   double stemTime;  // G at p, fixed
   template <typename T>
-  bool operator()(const T* knot, const T* taper, T* residual) const {
-    residual[0] = edge.gap(knot, taper, T(stemTime));
+  bool operator()(const T* knot, const T* taper, const T* death, T* residual) const {
+    residual[0] = edge.gap(knot, taper, death, T(stemTime));
     return true;
   }
 };
@@ -163,10 +182,10 @@ struct KnotEdgeResidual {
 struct JointKnotEdgeResidual {
   EdgeGeometry edge;
   template <typename T>
-  bool operator()(const T* pith, const T* knot, const T* taper, T* residual) const {
+  bool operator()(const T* pith, const T* knot, const T* taper, const T* death, T* residual) const {
     T stem, radius;
     undeformedStem(pith, edge.p, edge.ringWidth, stem, radius);
-    residual[0] = edge.gap(knot, taper, stem);
+    residual[0] = edge.gap(knot, taper, death, stem);
     return true;
   }
 };
@@ -365,10 +384,16 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     initial[k].taperAge = std::max(0.1f, static_cast<float>(lowerMedian(ages)));
   }
 
-  // Parameters: per knot origin (3), direction (3), log speed, and its taper; the shared k_stem; a level
-  // per contour.
-  std::vector<double> taperParams(initial.size());
-  for (std::size_t k = 0; k < initial.size(); ++k) taperParams[k] = initial[k].taper;
+  // Parameters: per knot origin (3), direction (3), log speed, its taper and its death; the shared k_stem;
+  // a level per contour. A dead knot (from `start`: the joint stage found it stopped thickening, below)
+  // has its death fitted and no taper; an alive one its taper and no death.
+  std::vector<double> taperParams(initial.size()), deathParams(initial.size());
+  std::vector<KnotFrame> frames(initial.size());
+  for (std::size_t k = 0; k < initial.size(); ++k) {
+    taperParams[k] = initial[k].taper;
+    deathParams[k] = initial[k].dead() ? initial[k].deathTime : kAliveDeath;
+    knotFrame(initial[k].direction, pith.direction, frames[k].up, frames[k].side);
+  }
   std::vector<std::array<double, 7>> knotParams(initial.size());
   for (std::size_t k = 0; k < initial.size(); ++k) {
     const BlockKnot& b = initial[k];
@@ -381,7 +406,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
                      std::log(static_cast<double>(b.speed))};
   }
   double kStem = settings.knotSmoothStem;
-  const BlockKnots initialKnots(initial, settings, stem.ringWidth());
+  const BlockKnots initialKnots(initial, settings, stem.ringWidth(), pith.direction);
   std::vector<double> levels(contours.count(), 0.0);
   ceres::Problem problem;
   std::vector<bool> knotInProblem(initial.size(), false);
@@ -403,15 +428,16 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
       if (seen[k]++ % stride[k] != 0) continue;
       ++fittedNear[k];
       if (freePith) {
-        auto* cost = new ceres::AutoDiffCostFunction<JointNearResidual, 1, 6, 7, 1, 1, 1>(
-            new JointNearResidual{contours.points[i], ringWidth, initial[k].taperAge, &settings});
+        auto* cost = new ceres::AutoDiffCostFunction<JointNearResidual, 1, 6, 7, 1, 1, 1, 1>(
+            new JointNearResidual{contours.points[i], ringWidth, initial[k].taperAge, frames[k], &settings});
         problem.AddResidualBlock(cost, new ceres::SoftLOneLoss(0.1), pithParams.data(), knotParams[k].data(),
-                                 &taperParams[k], &kStem, &levels[c]);
+                                 &taperParams[k], &deathParams[k], &kStem, &levels[c]);
       } else {
-        auto* cost = new ceres::AutoDiffCostFunction<NearPointResidual, 1, 7, 1, 1, 1>(new NearPointResidual{
-            contours.points[i], stemTime[i], stemRadius[i], ringWidth, initial[k].taperAge, &settings});
+        auto* cost = new ceres::AutoDiffCostFunction<NearPointResidual, 1, 7, 1, 1, 1, 1>(
+            new NearPointResidual{contours.points[i], stemTime[i], stemRadius[i], ringWidth,
+                                  initial[k].taperAge, frames[k], &settings});
         problem.AddResidualBlock(cost, new ceres::SoftLOneLoss(0.1), knotParams[k].data(), &taperParams[k],
-                                 &kStem, &levels[c]);
+                                 &deathParams[k], &kStem, &levels[c]);
       }
       knotInProblem[k] = true;
     }
@@ -445,14 +471,15 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     for (const glm::vec3& p : edges[k]) {
       const EdgeGeometry edge{p, ringWidth, initial[k].taperAge, maxKnotSpeed(settings)};
       if (freePith) {
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<JointKnotEdgeResidual, 1, 6, 7, 1>(
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<JointKnotEdgeResidual, 1, 6, 7, 1, 1>(
                                      new JointKnotEdgeResidual{edge}),
-                                 edgeLoss(), pithParams.data(), knotParams[k].data(), &taperParams[k]);
+                                 edgeLoss(), pithParams.data(), knotParams[k].data(), &taperParams[k],
+                                 &deathParams[k]);
       } else {
         const double g = stem.evaluate(pith.toCylindrical(p));
         problem.AddResidualBlock(
-            new ceres::AutoDiffCostFunction<KnotEdgeResidual, 1, 7, 1>(new KnotEdgeResidual{edge, g}),
-            edgeLoss(), knotParams[k].data(), &taperParams[k]);
+            new ceres::AutoDiffCostFunction<KnotEdgeResidual, 1, 7, 1, 1>(new KnotEdgeResidual{edge, g}),
+            edgeLoss(), knotParams[k].data(), &taperParams[k], &deathParams[k]);
       }
     }
     knotInProblem[k] = true;
@@ -478,12 +505,18 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     }
     problem.SetParameterLowerBound(knotParams[k].data(), 6, std::log(kMinSpeed));
     problem.SetParameterUpperBound(knotParams[k].data(), 6, std::log(maxSpeed));
-    if (taperFree[k]) {
+    if (initial[k].dead()) {
+      // Where it died: between a year and three times where the joint stage put it.
+      problem.SetParameterBlockConstant(&taperParams[k]);
+      problem.SetParameterLowerBound(&deathParams[k], 0, kMinDeath);
+      problem.SetParameterUpperBound(&deathParams[k], 0, std::max(3.0 * deathParams[k], kMinDeath + 1.0));
+    } else if (taperFree[k]) {
       problem.SetParameterLowerBound(&taperParams[k], 0, -kMaxKnotTaper);
       problem.SetParameterUpperBound(&taperParams[k], 0, kMaxKnotTaper);
     } else {
       problem.SetParameterBlockConstant(&taperParams[k]);  // one face's edge: no second diameter
     }
+    if (!initial[k].dead()) problem.SetParameterBlockConstant(&deathParams[k]);
     e.optimized = true;
   }
   const bool anyKnot = std::any_of(knotInProblem.begin(), knotInProblem.end(), [](bool b) { return b; });
@@ -524,6 +557,20 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     fitted[k].direction = glm::normalize(glm::vec3(q[3], q[4], q[5]));
     fitted[k].speed = static_cast<float>(std::exp(q[6]));
     fitted[k].taper = static_cast<float>(taperParams[k]);
+    if (initial[k].dead()) fitted[k].deathTime = static_cast<float>(deathParams[k]);
+    BlockKnotFitEntry& e = out.entries[entryOf[k]];
+    if (taperFree[k] && !initial[k].dead() && fitted[k].taper >= options.deadTaper) {
+      // It stopped thickening between its edges (the taper runs to its bound): a dead knot (Larsson 2022
+      // Sec. 4.2.2), with the section it has at its taper age, grown there at the start speed or faster.
+      BlockKnot dead = fitted[k];
+      dead.speed = std::max(speed0, fitted[k].speed);
+      dead.taper = 0.0f;
+      dead.deathTime =
+          std::max(static_cast<float>(kMinDeath), fitted[k].speed * fitted[k].taperAge / dead.speed);
+      fitted[k] = dead;
+      e.note += "; stopped thickening (taper " + std::to_string(taperParams[k]) + "): dead from " +
+                std::to_string(dead.deathTime) + " years";
+    }
   }
   out.kStem = static_cast<float>(kStem);
   if (pithOut) *pithOut = pithParams;
@@ -541,7 +588,7 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
   }
   KnotSettings fittedSettings = settings;
   fittedSettings.knotSmoothStem = out.kStem;
-  const BlockKnots fittedKnots(fitted, fittedSettings, stem.ringWidth());
+  const BlockKnots fittedKnots(fitted, fittedSettings, stem.ringWidth(), pith.direction);
   std::vector<double> withInitial(n), withFitted(n);
   for (int i = 0; i < n; ++i) {
     const float g = static_cast<float>(stemTime[i]);
@@ -569,11 +616,12 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
       const glm::dvec3 d(fitted[k].direction);
       const double q[7] = {o.x, o.y, o.z, d.x, d.y, d.z, std::log(v)};
       const double taper = fitted[k].taper;
+      const double death = fitted[k].dead() ? fitted[k].deathTime : kAliveDeath;
       std::vector<double> gaps;
       for (const glm::vec3& p : edges[k]) {
         const EdgeGeometry edge{p, ringWidth, fitted[k].taperAge, maxKnotSpeed(settings)};
         const double time = g.evaluate(g.axis().toCylindrical(p));
-        gaps.push_back(std::abs(edge.gap(q, &taper, time)) * ringWidth);
+        gaps.push_back(std::abs(edge.gap(q, &taper, &death, time)) * ringWidth);
       }
       e.edgeDistanceMm = lowerMedian(gaps);
     }

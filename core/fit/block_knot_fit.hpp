@@ -47,6 +47,10 @@ struct BlockKnotFitOptions {
   // contour points fitted near the knot. Without them the contours leave the knot's size free and it
   // comes out far too thin (docs/knots.md, the test bed).
   std::vector<KnotOutline> outlines;
+  // Issue 19: a knot whose fitted taper reaches this (its edge stopped growing between the faces; the
+  // bound is kMaxKnotTaper) becomes a dead knot (BlockKnot::deathTime) that died where it stopped; a dead
+  // knot in `start` has its death fitted. Above kMaxKnotTaper: never.
+  float deadTaper = 0.9f;
 };
 
 // One knot id's outcome.

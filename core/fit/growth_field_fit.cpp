@@ -293,7 +293,10 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
       if (anyImage) {
         // Ring width and phase along the merged field in mm (smin(r, d_k / v_k)): the dense rings of the
         // knot then fall on the same levels as the stem's instead of posing as extra rings.
-        const BlockKnots mm(joint.knots.knots, fitted, 1.0f);
+        // Their times in mm too (a ring width of 1): taper age and death scaled from the fit's years.
+        std::vector<BlockKnot> inMm = joint.knots.knots;
+        for (BlockKnot& k : inMm) k.taperAge *= r.rings.ringWidthMm, k.deathTime *= r.rings.ringWidthMm;
+        const BlockKnots mm(inMm, fitted, 1.0f, knotAxis.direction);
         r.rings = estimateRingLevels(
             [&](glm::vec3 p) {
               const float radius = knotAxis.toCylindrical(p, false).radius;
@@ -306,9 +309,10 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
       validate(field.params);
       const GrowthField undeformed(knotAxis, r.rings.ringWidthMm, GrowthRates::uniform(block, knotAxis));
       const IsoContours away = contoursAwayFromKnots(
-          contours, undeformed, BlockKnots(joint.knots.knots, fitted, r.rings.ringWidthMm));
+          contours, undeformed,
+          BlockKnots(joint.knots.knots, fitted, r.rings.ringWidthMm, knotAxis.direction));
       r.contoursAwayFromKnots = away.count();
-      const BlockKnots inYears(joint.knots.knots, fitted, r.rings.ringWidthMm);
+      const BlockKnots inYears(joint.knots.knots, fitted, r.rings.ringWidthMm, knotAxis.direction);
       field.rates =
           fitRates(away, block, knotAxis, r.rings.ringWidthMm, input.rings, field.params, r, sub, &inYears);
     } else {
@@ -410,7 +414,8 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
   const PithAxis finalAxis =
       PithAxis::fromAngles(out.params.pithOrigin, out.params.pithTilt, out.params.pithAzimuth);
   const GrowthField final(out.params, out.rates ? *out.rates : GrowthRates::uniform(block, finalAxis));
-  const BlockKnots finalKnots(out.knots, KnotSettings::fromParameters(out.params), out.params.ringWidth);
+  const BlockKnots finalKnots(out.knots, KnotSettings::fromParameters(out.params), out.params.ringWidth,
+                              finalAxis.direction);
   out.contours.resize(contours.count());
   parallelRows(contours.count(), [&](int c) {
     ContourResidual& cr = out.contours[c];

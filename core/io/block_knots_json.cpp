@@ -34,6 +34,7 @@ json blockKnotsToJson(const std::vector<BlockKnot>& knots) {
       knot["taper"] = k.taper;
       knot["taper_age_years"] = k.taperAge;
     }
+    if (k.dead()) knot["death_years"] = k.deathTime;  // absent: alive, as every knot before issue 19
     out.push_back(std::move(knot));
   }
   return out;
@@ -51,10 +52,10 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
     if (!entry.is_object()) throw InputError(what + " must be an object, got " + describeJson(entry));
     for (const auto& [key, value] : entry.items()) {
       if (key != "id" && key != "origin" && key != "direction" && key != "speed" && key != "taper" &&
-          key != "taper_age_years")
+          key != "taper_age_years" && key != "death_years")
         throw InputError(what + " has an unknown key \"" + key +
                          "\" (written by a newer Kerf? known: id, origin, direction, speed, taper, "
-                         "taper_age_years)");
+                         "taper_age_years, death_years)");
     }
     for (const char* key : {"id", "origin", "direction", "speed"})
       if (!entry.contains(key)) throw InputError(what + " lacks \"" + key + "\"");
@@ -70,6 +71,14 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
       if (!entry.contains(key)) continue;
       if (!entry[key].is_number()) throw InputError(what + "." + key + " must be a number");
       *member = checkedNumber<float>(entry[key].get<double>(), what + "." + key);
+    }
+    if (entry.contains("death_years") && !entry["death_years"].is_null()) {
+      // The stem's age in years when the branch died; null or absent: alive.
+      if (!entry["death_years"].is_number())
+        throw InputError(what +
+                         ".death_years must be a number of years from the pith (or null: alive), got " +
+                         describeJson(entry["death_years"]));
+      knot.deathTime = checkedNumber<float>(entry["death_years"].get<double>(), what + ".death_years");
     }
     validate(knot, what);
     knots.push_back(knot);

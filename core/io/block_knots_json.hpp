@@ -4,8 +4,10 @@
 //
 //   "knots": [{"id": 0, "origin": [x, y, z], "direction": [x, y, z], "speed": 0.12}, ...]
 //
-// Block mm; "direction" need not be unit length (it is normalised when the model is built). The global
-// knot settings (smoothness, darkening) are parameters (knots.*), not stored here.
+// Block mm; "direction" need not be unit length (it is normalised when the model is built). Optional:
+// "taper", "taper_age_years" (issue 19 item 2), "death_years" (a dead knot: the stem's age in years when
+// the branch died; absent or null: alive). The global knot settings (smoothness, darkening,
+// knots.stem_radius) are parameters (knots.*), not stored here.
 #include <nlohmann/json_fwd.hpp>
 #include <vector>
 

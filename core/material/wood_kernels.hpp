@@ -29,11 +29,13 @@ struct WoodKernels : NoiseKernels {
     return field_.axis().toCylindrical(p, withAzimuth);
   }
   float growthAt(const Cylindrical& c) const { return field_.evaluate(c); }
-  float mergeKnots(vec3 p, float stemTime, float stemRadius, float& darkness) const {
+  float mergeKnots(vec3 p, float stemTime, float stemRadius, float& darkness, float& shade) const {
     darkness = 0.0f;
+    shade = 1.0f;
     if (!knots_) return stemTime;
     const BlockKnotSample k = knots_->merge(p, stemTime, stemRadius);
     darkness = k.darkness;
+    shade = k.shade;
     return k.time;
   }
 

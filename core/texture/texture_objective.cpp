@@ -121,8 +121,9 @@ TextureObjective::TextureObjective(const Block& block, const GrowthRates& rates,
 bool TextureObjective::sameLocations(const WoodModel& model) const {
   for (std::size_t i = 0; i < probes_.size(); ++i) {
     const WoodLocation a = model.material().locate(probes_[i]), &b = probeLocations_[i];
-    if (a.year != b.year || a.knotDarkness != b.knotDarkness || a.c.height != b.c.height ||
-        a.c.radius != b.c.radius || a.c.azimuth != b.c.azimuth || a.c.x != b.c.x || a.c.y != b.c.y)
+    if (a.year != b.year || a.knotDarkness != b.knotDarkness || a.knotShade != b.knotShade ||
+        a.c.height != b.c.height || a.c.radius != b.c.radius || a.c.azimuth != b.c.azimuth ||
+        a.c.x != b.c.x || a.c.y != b.c.y)
       return false;
   }
   return true;

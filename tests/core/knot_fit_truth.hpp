@@ -77,12 +77,13 @@ inline double trueKnotDiameter(const KnotField& field, const Board& board, int k
 }
 
 // The fitted knot's diameter where its axis meets the face plane: the knot's wood, T_k < G
-// (field/block_knots.hpp, Mokume Sec. 5.2.4 Eq. 7), cut perpendicular to its axis.
+// (field/block_knots.hpp, Mokume Sec. 5.2.4 Eq. 7), cut perpendicular to its axis. A dead knot's wood is
+// the section of its death (Eq. 5: T_k < min(G, death), its speed that of its death).
 inline double fittedKnotDiameter(const GrowthField& stem, const BlockKnot& knot, const glm::vec3& onAxis,
                                  const KnotSettings& settings) {
   const glm::vec3 d = glm::normalize(knot.direction);
   return crossSectionDiameter(onAxis, d, [&](const glm::vec3& q) {
-    const float g = stem.evaluate(q);
+    const float g = std::min(stem.evaluate(q), knot.deathTime);
     const float v = knotSpeedAt(knot.speed, knot.taper, knot.taperAge, g, maxKnotSpeed(settings));
     return knotAxisDistance(&knot.origin.x, &d.x, q) / (v * stem.ringWidth()) < g;
   });

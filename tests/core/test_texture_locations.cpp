@@ -19,8 +19,9 @@ using namespace kerf;
 namespace {
 
 bool sameLocation(const WoodLocation& a, const WoodLocation& b) {
-  return a.year == b.year && a.knotDarkness == b.knotDarkness && a.c.height == b.c.height &&
-         a.c.radius == b.c.radius && a.c.azimuth == b.c.azimuth && a.c.x == b.c.x && a.c.y == b.c.y;
+  return a.year == b.year && a.knotDarkness == b.knotDarkness && a.knotShade == b.knotShade &&
+         a.c.height == b.c.height && a.c.radius == b.c.radius && a.c.azimuth == b.c.azimuth &&
+         a.c.x == b.c.x && a.c.y == b.c.y;
 }
 
 // Points through the whole block (centred on the origin), on a 7 x 7 x 7 grid.

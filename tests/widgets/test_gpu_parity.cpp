@@ -4,6 +4,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QtTest>
+#include <limits>
 #include <memory>
 #include <set>
 #include <string>
@@ -142,18 +143,7 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
   // smooth minimum and darkened, on faces and a cut; the second tapers (issue 19 item 2).
   void blockKnots() {
     Project project = demoProject();
-    const WoodParameters& p = project.params;
-    const PithAxis axis = PithAxis::fromAngles(p.pithOrigin, p.pithTilt, p.pithAzimuth);
-    for (const glm::vec3 target : {glm::vec3(4, 6, 8), glm::vec3(-10, -12, 14)}) {
-      const glm::vec3 onPith = axis.origin + glm::dot(target - axis.origin, axis.direction) * axis.direction;
-      BlockKnot knot;
-      knot.id = static_cast<int>(project.knots.size());
-      knot.origin = onPith;
-      knot.direction = glm::normalize(target - onPith + glm::vec3(0, 0.2f * glm::length(target - onPith), 0));
-      knot.speed = 0.14f;
-      if (!project.knots.empty()) knot.taper = 0.4f, knot.taperAge = 12.0f;
-      project.knots.push_back(knot);
-    }
+    addTwoKnots(project, false);
     const WoodModel model(project);
     QCOMPARE(static_cast<int>(model.knots().knots().size()), 2);
     for (FaceId face : kAllFaces)
@@ -163,7 +153,51 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
     compare(renderCut(model, plane, 2.5f), renderer_->renderCut(model, plane, 2.5f), "knots_cut");
   }
 
+  // A dead knot in the block (issue 19, Larsson et al. 2022 Sec. 4.2.2-4.3): encased, its sweep inverted
+  // with the butterfly, darker, with its bark ring; the two knots above, dead (the second tapering).
+  void deadBlockKnots() {
+    Project project = demoProject();
+    project.params.knotStemRadius = 90.0f;  // a thin trunk: the death's effects grow fast over the block
+    addTwoKnots(project, true);
+    const WoodModel model(project);
+    // The pictures compared show what is dead: bark-ring points in the block, and they differ from the
+    // same knots alive.
+    int barkRing = 0;
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j)
+        for (int k = 0; k < 40; ++k)
+          barkRing += model.material().locate(glm::vec3(i - 19.5f, j - 19.5f, k - 19.5f)).knotShade < 1.0f;
+    QVERIFY2(barkRing > 20, qPrintable(QString("%1 bark-ring points").arg(barkRing)));
+    Project alive = project;
+    for (BlockKnot& knot : alive.knots) knot.deathTime = std::numeric_limits<float>::infinity();
+    const CutPlane plane({0, 0, 0}, {0.2f, 1.0f, 0.4f});
+    const Image cut = renderCut(model, plane, 2.5f);
+    QVERIFY(compareImages(cut, renderCut(WoodModel(alive), plane, 2.5f), 0.02f).meanAbs > 1e-3);
+    for (FaceId face : kAllFaces)
+      compare(renderFace(model, face, {96, 96}), renderer_->renderFace(model, face, {96, 96}),
+              QString("dead_knots_face_%1").arg(faceLetter(face)));
+    compare(cut, renderer_->renderCut(model, plane, 2.5f), "dead_knots_cut");
+  }
+
  private:
+  // Two knots from the pith through the block; the second tapers (issue 19 item 2). Dead: each dies about
+  // half-way to its target, so the block shows it alive, dead and encased.
+  static void addTwoKnots(Project& project, bool dead) {
+    const WoodParameters& p = project.params;
+    const PithAxis axis = PithAxis::fromAngles(p.pithOrigin, p.pithTilt, p.pithAzimuth);
+    for (const glm::vec3 target : {glm::vec3(4, 6, 8), glm::vec3(-10, -12, 14)}) {
+      const glm::vec3 onPith = axis.origin + glm::dot(target - axis.origin, axis.direction) * axis.direction;
+      BlockKnot knot;
+      knot.id = static_cast<int>(project.knots.size());
+      knot.origin = onPith;
+      knot.direction = glm::normalize(target - onPith + glm::vec3(0, 0.2f * glm::length(target - onPith), 0));
+      knot.speed = 0.14f;
+      if (dead) knot.deathTime = 0.5f * glm::length(target - onPith) / p.ringWidth;
+      if (!project.knots.empty()) knot.taper = 0.4f, knot.taperAge = 12.0f;
+      project.knots.push_back(knot);
+    }
+  }
+
   // GLSL source without // and /* */ comments.
   static std::string withoutComments(const std::string& source) {
     std::string out;

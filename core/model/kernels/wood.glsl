@@ -14,8 +14,9 @@
 //   u_axisDirection, u_axisReference, u_axisBinormal   the pith frame (field/pith_axis.hpp)
 //   Cylindrical cylindricalOf(vec3 p, bool withAzimuth)  the pith axis' coordinates of a point
 //   float growthAt(Cylindrical c)                         the growth field G (years)
-//   float mergeKnots(vec3 p, float stemTime, float stemRadius, KERF_OUT(float) darkness)
-//                                                         knots merged into G (Mokume Sec. 5.2.4 Eq. 7)
+//   float mergeKnots(vec3 p, float stemTime, float stemRadius, KERF_OUT(float) darkness, KERF_OUT(float) shade)
+//                                 knots merged into G (Mokume Sec. 5.2.4 Eq. 7); darkness x knots.darkening is
+//                                 subtracted, shade multiplies (a dead knot's bark ring, Larsson 2022 Sec. 4.3)
 
 // Independent sub-seeds for the model's random features, all derived from model.seed.
 KERF_CONST uint kDistortRadial = 1u;
@@ -244,7 +245,8 @@ float woodYear(vec3 p) {
   vec3 u = undistort(p, cylindricalOf(p, false), false, unusedFiber);
   Cylindrical c = cylindricalOf(u, true);
   float darkness;
-  return mergeKnots(u, growthAt(c), c.radius, darkness);
+  float shade;
+  return mergeKnots(u, growthAt(c), c.radius, darkness, shade);
 }
 
 // Where a point lies in the tree: what the growth field, its distortion and the knots decide, and no
@@ -254,6 +256,7 @@ struct WoodLocation {
   Cylindrical c;        // the undistorted point in the tree's frame
   float year;           // WoodSample.year
   float knotDarkness;   // how much a knot darkens the point (Larsson et al. 2022 Sec. 4.3)
+  float knotShade;      // a dead knot's bark ring: its colour factor (Sec. 4.3); 1 elsewhere
   vec3 fiberDirection;  // WoodSample.fiberDirection
 };
 
@@ -262,7 +265,7 @@ WoodLocation locateWood(vec3 p, bool wantFiber) {
   Cylindrical distorted = cylindricalOf(p, false);  // undistort needs no azimuth
   vec3 u = undistort(p, distorted, wantFiber, w.fiberDirection);
   w.c = cylindricalOf(u, true);
-  w.year = mergeKnots(u, growthAt(w.c), w.c.radius, w.knotDarkness);  // Mokume Sec. 5.2.4 Eq. 7
+  w.year = mergeKnots(u, growthAt(w.c), w.c.radius, w.knotDarkness, w.knotShade);  // Mokume Sec. 5.2.4 Eq. 7
   return w;
 }
 
@@ -293,6 +296,7 @@ WoodSample shadeWood(WoodLocation w, int faceIndex) {
   vec3 color = early * pow(late / early, vec3(t)) * s.shade;
   color = mix(color, P.rayColor, P.rayOpacity * s.ray);
   color -= knotDarkness * P.knotDarkening;  // Larsson et al. 2022 Sec. 4.3
+  color *= w.knotShade;
   if (faceIndex == 0) color *= P.faceTintA;
   else if (faceIndex == 1) color *= P.faceTintB;
   else if (faceIndex == 2) color *= P.faceTintC;
