@@ -33,12 +33,14 @@ QList<KnotTableBase::Column> blockColumns() {
        BlockKnotTable::tr("How the branch's thickening slows as the tree grows: 0 a straight cone from the "
                           "pith, towards 0.95 a branch that nearly stopped thickening, as dying ones do")},
       {BlockKnotTable::tr("Ø mm\non faces"),
-       BlockKnotTable::tr("Where the knot comes out of the block and how thick it is there: face letter and "
-                          "diameter across the branch, whole mm (the cell's tooltip has tenths and the tree's age there)")},
+       BlockKnotTable::tr(
+           "Where the knot comes out of the block and how thick it is there: face letter and "
+           "diameter across the branch, whole mm (the cell's tooltip has tenths and the tree's age there)")},
       {BlockKnotTable::tr("Dead"),
-       BlockKnotTable::tr("Whether the branch died: from then on it stops thickening and is encased, a "
-                          "loose knot with a dark bark ring; alive, it stays intergrown with the stem's rings "
-                          "(Space toggles)")},
+       BlockKnotTable::tr(
+           "Whether the branch died: from then on it stops thickening and is encased, a "
+           "loose knot with a dark bark ring; alive, it stays intergrown with the stem's rings "
+           "(Space toggles)")},
       {BlockKnotTable::tr("Died at\nyears"),
        BlockKnotTable::tr("When the branch died: the tree's age in years counted from the pith (rings from "
                           "the pith to where the knot's bark ring lies)")}};

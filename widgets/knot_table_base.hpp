@@ -37,7 +37,8 @@ class KnotTableBase : public QWidget {
 
  protected:
   // `addTip` empty: no Add Knot button.
-  KnotTableBase(const QList<Column>& columns, const QString& addTip, const QString& deleteTip, QWidget* parent);
+  KnotTableBase(const QList<Column>& columns, const QString& addTip, const QString& deleteTip,
+                QWidget* parent);
 
   // Fills `count` rows: between beginRows and endRows no cell edit is reported; endRows selects the row
   // that was selected before again.

@@ -18,8 +18,10 @@ BlockKnotsController::BlockKnotsController(const EditorContext& context, BlockKn
   connect(table_, &BlockKnotTable::knotEdited, this, &BlockKnotsController::editKnot);
   connect(table_, &BlockKnotTable::deleteRequested, this, &BlockKnotsController::deleteKnot);
   connect(table_, &BlockKnotTable::knotSelected, this, &BlockKnotsController::selectMarksOf);
-  connect(table_, &BlockKnotTable::valueRefused, this, [this](const QString& why) { emit statusShown(why, 8000); });
-  connect(annotationLayer_, &AnnotationLayer::selectionChanged, this, &BlockKnotsController::selectRowOfMarks);
+  connect(table_, &BlockKnotTable::valueRefused, this,
+          [this](const QString& why) { emit statusShown(why, 8000); });
+  connect(annotationLayer_, &AnnotationLayer::selectionChanged, this,
+          &BlockKnotsController::selectRowOfMarks);
 }
 
 void BlockKnotsController::showKnots(bool newDocument) {
@@ -50,9 +52,9 @@ void BlockKnotsController::deleteKnot(int row) {
   const QString name = BlockKnotTable::knotName(knots[row].id);
   knots.erase(knots.begin() + row);
   document_->editBlockKnots(std::move(knots), tr("Delete knot %1").arg(name));
-  emit statusShown(tr("Knot %1 deleted from the block; its marks stay on the faces (Ctrl+Z brings it back)")
-                       .arg(name),
-                   5000);
+  emit statusShown(
+      tr("Knot %1 deleted from the block; its marks stay on the faces (Ctrl+Z brings it back)").arg(name),
+      5000);
 }
 
 void BlockKnotsController::selectMarksOf(int row) {

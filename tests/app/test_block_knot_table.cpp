@@ -7,6 +7,7 @@
 #include <QDockWidget>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -139,8 +140,9 @@ void TestBlockKnotTable::deathInTheTableKillsTheKnotWithUndo() {
         pair.setPixel(x, y, before[i].pixel(x, y));
         pair.setPixel(after.width() + 1 + x, y, after.pixel(x, y));
       }
-    QVERIFY(pair.scaled(pair.size() * 8).save(
-        testing::artifact(QStringLiteral("block_knot_death_%1").arg(QChar(faceLetter(out[i].face))))));
+    QVERIFY(pair.scaled(pair.size() * 8)
+                .save(testing::artifact(
+                    QStringLiteral("block_knot_death_%1").arg(QChar(faceLetter(out[i].face))))));
   }
   for (int i = 0; i < 2; ++i) {
     const double changed = testing::changedShare(before[i], aroundKnot(out[i]));
@@ -277,16 +279,19 @@ void TestBlockKnotTable::savesScreenshot() {
   window_->toggleViewAction()->trigger();  // the faces show the model: the dead knot's bark ring
   cell(0, BlockKnotTable::Dead)->setCheckState(Qt::Checked);
   QVERIFY(waitForFaces(rendered, 2));
-  table()->table()->selectRow(0);
+  table()->setSelectedKnot(-1);
+  table()->table()->selectRow(0);  // and with it the knot's marks
+  QCOMPARE(window_->annotationLayer()->selectedKnots().size(), 2u);
   window_->viewport()->refineNow();
+  window_->statusBar()->clearMessage();
   QTest::qWait(200);
   QVERIFY(QDir().mkpath(KERF_TEST_ARTIFACTS_DIR));
   QVERIFY(grabWindowWithGl(window_.get()).save(testing::artifact(QStringLiteral("block_knot_table"))));
   QCOMPARE(window_->size(), QSize(1366, 768));
   double wood = 0;
-  for (const QWidget* view : {static_cast<const QWidget*>(window_->facesView()),
-                              static_cast<const QWidget*>(window_->viewport()),
-                              static_cast<const QWidget*>(window_->cutView())})
+  for (const QWidget* view :
+       {static_cast<const QWidget*>(window_->facesView()), static_cast<const QWidget*>(window_->viewport()),
+        static_cast<const QWidget*>(window_->cutView())})
     wood += view->isVisible() ? double(view->width()) * view->height() : 0.0;
   wood /= double(window_->width()) * window_->height();
   qInfo("the wood covers %.1f %% of the window with the Knots tab raised", 100 * wood);
