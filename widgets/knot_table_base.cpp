@@ -1,15 +1,38 @@
 #include "knot_table_base.hpp"
 
 #include <QAction>
+#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QPushButton>
+#include <QStyledItemDelegate>
 #include <QTableWidget>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <cmath>
 
 namespace kerf {
+
+namespace {
+
+// Numbers are typed in a spin box with room for any value and three decimals (Qt's default box has two):
+// the table refuses what does not fit the knot and says why, rather than the box clamping it unseen.
+class NumberDelegate : public QStyledItemDelegate {
+ public:
+  using QStyledItemDelegate::QStyledItemDelegate;
+  QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option,
+                        const QModelIndex& index) const override {
+    if (index.data(Qt::EditRole).typeId() != QMetaType::Double)
+      return QStyledItemDelegate::createEditor(parent, option, index);
+    auto* box = new QDoubleSpinBox(parent);
+    box->setFrame(false);
+    box->setRange(-1e6, 1e6);
+    box->setDecimals(3);
+    return box;
+  }
+};
+
+}  // namespace
 
 KnotTableBase::KnotTableBase(const QList<Column>& columns, const QString& addTip, const QString& deleteTip,
                              QWidget* parent)
@@ -25,6 +48,7 @@ KnotTableBase::KnotTableBase(const QList<Column>& columns, const QString& addTip
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   table_->verticalHeader()->setDefaultSectionSize(22);
+  table_->setItemDelegate(new NumberDelegate(table_));
   layout->addWidget(table_, 1);
 
   auto* buttons = new QHBoxLayout;
@@ -54,6 +78,10 @@ KnotTableBase::KnotTableBase(const QList<Column>& columns, const QString& addTip
     if (updating_ || row < 0 || column < 0) return;
     QToolTip::hideText();
     cellEdited(row, column);
+  });
+  // A click on the selected row selects its knot again elsewhere (e.g. its marks, deselected since).
+  connect(table_, &QTableWidget::cellClicked, this, [this](int row, int) {
+    if (!updating_ && row == selectedKnot()) emit knotSelected(row);
   });
   connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
     delete_->setEnabled(selectedKnot() >= 0);

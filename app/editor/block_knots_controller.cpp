@@ -27,10 +27,11 @@ BlockKnotsController::BlockKnotsController(const EditorContext& context, BlockKn
 void BlockKnotsController::showKnots(bool newDocument) {
   table_->setModel(document_->model());
   const bool hasKnots = !document_->project().knots.empty();
-  // Shown when a document with knots opens or a fit brings the first ones; never hidden under the user's
-  // hands (a deleted last knot leaves the empty table, which undo fills again).
+  // Shown when knots come (a document with knots opens, a fit brings the first ones); hidden with a document
+  // without any, never under the user's hands (a deleted last knot leaves the empty table, which undo fills
+  // again; saving leaves the dock as the user left it).
   if (newDocument && !hasKnots) dock_->hide();
-  if (hasKnots && (newDocument || !hadKnots_)) dock_->show();
+  if (hasKnots && !hadKnots_) dock_->show();
   hadKnots_ = hasKnots;
 }
 

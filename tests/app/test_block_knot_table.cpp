@@ -2,9 +2,10 @@
 // "Knots" dock shows it; ticking Dead and typing a death kill the knot in the document, one undo step
 // each, and the faces show it (the pixels around the knot change, and come back with undo); a death
 // before the knot starts is refused at its cell; a row selects its knot's marks and the marks their row;
-// Del deletes the knot with undo; the table follows a fit that adds knots; the knots' edits survive a
-// save and reopen. Saves the editor at 1366 x 768 with the table (block_knot_table.png).
+// Del deletes the knot with undo and Space ticks Dead; the table follows a fit that adds knots; the knots'
+// edits survive a save and reopen. Saves the editor at 1366 x 768 with the table (block_knot_table.png).
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -192,13 +193,31 @@ void TestBlockKnotTable::angleEditTurnsTheKnot() {
   QCOMPARE(describeBlockKnot(after, pith).aroundDeg, describeBlockKnot(before, pith).aroundDeg);
   document()->undoStack()->undo();
   QCOMPARE(document()->project().knots[0], before);
+  // Typed in the cell's editor, with three decimals.
+  QTableWidget* t = table()->table();
+  t->setCurrentCell(0, BlockKnotTable::Speed);
+  t->editItem(cell(0, BlockKnotTable::Speed));
+  auto* box = t->viewport()->findChild<QDoubleSpinBox*>();
+  QVERIFY(box);
+  box->setValue(0.075);
+  QTest::keyClick(box, Qt::Key_Return);  // the delegate commits from the event loop
+  QTRY_COMPARE(document()->project().knots[0].speed, 0.075f);
+  document()->undoStack()->undo();
+  QCOMPARE(document()->project().knots[0], before);
 }
 
 void TestBlockKnotTable::rowSelectsItsMarksAndMarksTheirRow() {
   AnnotationLayer* layer = window_->annotationLayer();
   QCOMPARE(document()->annotations().knots.size(), 2u);  // the demo's two marks of knot 0
+  table()->setSelectedKnot(-1);
   layer->clearSelection();
   table()->table()->selectRow(0);  // as a click on the row
+  QCOMPARE(layer->selectedKnots(), (std::vector<std::size_t>{0, 1}));
+  // The marks deselected on the faces, a click on the still selected row selects them again.
+  layer->clearSelection();
+  QTableWidget* t = table()->table();
+  QTest::mouseClick(t->viewport(), Qt::LeftButton, {},
+                    t->visualRect(t->model()->index(0, BlockKnotTable::Angle)).center());
   QCOMPARE(layer->selectedKnots(), (std::vector<std::size_t>{0, 1}));
   table()->setSelectedKnot(-1);
   layer->setSelection({}, {1});  // one mark picked on the faces
@@ -219,6 +238,14 @@ void TestBlockKnotTable::deleteKeyDeletesTheKnotWithUndo() {
   document()->undoStack()->undo();
   QCOMPARE(document()->project().knots, before);
   QCOMPARE(table()->table()->rowCount(), 1);
+  // Space on the Dead box lets the knot die (and live again), one undo step each.
+  const bool dead = before[0].dead();
+  table()->table()->setFocus();
+  table()->table()->setCurrentCell(0, BlockKnotTable::Dead);
+  QTest::keyClick(table()->table(), Qt::Key_Space);
+  QCOMPARE(document()->project().knots[0].dead(), !dead);
+  document()->undoStack()->undo();
+  QCOMPARE(document()->project().knots, before);
 }
 
 void TestBlockKnotTable::followsAFitThatAddsKnots() {

@@ -63,7 +63,10 @@ TEST(BlockKnotShape, EachEditMovesOnlyWhatItNames) {
   around.aroundDeg = s.aroundDeg + 90.0f;
   const BlockKnot swung = reshapeBlockKnot(k, around, demo.pith());
   EXPECT_NEAR(describeBlockKnot(swung, demo.pith()).angleToPithDeg, s.angleToPithDeg, 1e-3f);
-  EXPECT_NEAR(glm::dot(swung.direction, glm::normalize(k.direction)), std::cos(s.angleToPithDeg * 3.14159265f / 180.0f) * std::cos(s.angleToPithDeg * 3.14159265f / 180.0f), 1e-4f);
+  EXPECT_NEAR(
+      glm::dot(swung.direction, glm::normalize(k.direction)),
+      std::cos(s.angleToPithDeg * 3.14159265f / 180.0f) * std::cos(s.angleToPithDeg * 3.14159265f / 180.0f),
+      1e-4f);
 
   BlockKnotShape height = s;
   height.heightMm = s.heightMm + 5.0f;
@@ -114,6 +117,7 @@ TEST(BlockKnotShape, AKnotMissingTheBlockHasNoCrossings) {
   const DemoKnot demo;
   BlockKnot away = demo.knot();
   away.origin += 500.0f * demo.pith().direction;  // far up the stem
-  EXPECT_TRUE(knotCrossings(away, demo.model.block(), demo.model.field(), demo.model.knots().settings()).empty());
+  EXPECT_TRUE(
+      knotCrossings(away, demo.model.block(), demo.model.field(), demo.model.knots().settings()).empty());
   EXPECT_GE(middleStemYears(away, demo.model.block(), demo.model.field()), 1.0f);
 }
