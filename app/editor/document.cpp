@@ -73,6 +73,14 @@ void Document::applyGrowthField(const WoodParameters& params, std::optional<Grow
                                    {params, std::move(rates), std::move(afterKnots)}, undoText));
 }
 
+void Document::editBlockKnots(std::vector<BlockKnot> knots, const QString& undoText) {
+  for (std::size_t i = 0; i < knots.size(); ++i)
+    validate(knots[i], "knot K" + std::to_string(knots[i].id + 1));
+  if (knots == project_.knots) return;
+  undo_.push(setGrowthFieldCommand(this, {project_.params, project_.rates, project_.knots},
+                                   {project_.params, project_.rates, std::move(knots)}, undoText));
+}
+
 void Document::editCutPlane(const CutPlaneSetting& setting, bool finished) {
   undo_.push(setCutPlaneCommand(this, cutPlane(), setting, finished));
 }

@@ -52,6 +52,9 @@ class Document : public QObject {
   // knots: the field's knots (Project::knots); std::nullopt keeps the current ones.
   void applyGrowthField(const WoodParameters& params, std::optional<GrowthRates> rates,
                         const QString& undoText, std::optional<std::vector<BlockKnot>> knots = std::nullopt);
+  // The block's knots (Project::knots: the knot table's edits) as one undo step of the growth field, the
+  // parameters and rates kept. Validates them first (InputError naming the knot; nothing is pushed then).
+  void editBlockKnots(std::vector<BlockKnot> knots, const QString& undoText);
   void editCutPlane(const CutPlaneSetting& setting, bool finished);
   void replacePhoto(FaceId face, const QString& path, const QImage& image);
   // The block's size and all six face photos together, as one undo step (File > Import Photos): a null

@@ -220,6 +220,7 @@ void MainWindow::createDocks() {
   historyDock->setObjectName("historyDock");
   historyDock->setWidget(history_);
   addDockWidget(Qt::BottomDockWidgetArea, historyDock);
+  createBlockKnotsDock();
   createLogDocks();  // main_window_docks.cpp; WindowLayout places every dock
 }
 

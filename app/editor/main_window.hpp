@@ -5,12 +5,13 @@
 // cancel, never on the GUI thread). The window holds the layout, the docks, the menus and their wiring;
 // the work is done by its controllers, each owning its jobs and state: FacesController (the rendered
 // faces and what they show), RingsController (detection, fit, traces), TextureController,
-// LogBoardController (logs, boards, panels), ExportController and FilesController (open, save, recent,
-// recovery, import), and WorkPath (the start page and Reconstruct).
+// LogBoardController (logs, boards, panels), BlockKnotsController (the block's knot table), ExportController
+// and FilesController (open, save, recent, recovery, import), and WorkPath (the start page and Reconstruct).
 #include <QMainWindow>
 #include <array>
 
 #include "appearance_controller.hpp"
+#include "block_knots_controller.hpp"
 #include "export_controller.hpp"
 #include "faces_controller.hpp"
 #include "files_controller.hpp"
@@ -32,6 +33,7 @@ class QUndoView;
 namespace kerf {
 
 class AnnotationLayer;
+class BlockKnotTable;
 class BoardControls;
 class CutPlaneControls;
 class CutPhotoController;
@@ -62,6 +64,7 @@ class MainWindow : public QMainWindow {
   TextureController* texture() const { return texture_; }
   AppearanceController* appearance() const { return appearance_; }
   LogBoardController* logBoard() const { return logBoard_; }
+  BlockKnotsController* blockKnots() const { return blockKnots_; }
   ExportController* exports() const { return exports_; }
   FilesController* files() const { return files_; }
   CutPhotoController* cutPhoto() const { return cutPhoto_; }
@@ -103,6 +106,7 @@ class MainWindow : public QMainWindow {
   LogView* logView() const { return logView_; }
   BoardControls* boardControls() const { return boardControls_; }
   KnotTable* knotTable() const { return knotTable_; }
+  BlockKnotTable* blockKnotTable() const { return blockKnotTable_; }  // the block's knots ("Knots" dock)
   PanelControls* panelControls() const { return panelControls_; }
   ImagePane* panelPane() const { return panelPane_; }
 
@@ -153,6 +157,7 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createLogDocks();                        // main_window_docks.cpp
   void createPanelDock(QTabWidget* boardTabs);  // main_window_docks.cpp
+  void createBlockKnotsDock();                  // main_window_docks.cpp
   void createControllers(RenderSettings settings);
   void connectController(EditorController* controller);
   void forwardSignals();
@@ -178,6 +183,7 @@ class MainWindow : public QMainWindow {
   TextureController* texture_ = nullptr;
   AppearanceController* appearance_ = nullptr;
   LogBoardController* logBoard_ = nullptr;
+  BlockKnotsController* blockKnots_ = nullptr;
   ExportController* exports_ = nullptr;
   FilesController* files_ = nullptr;
   CutPhotoController* cutPhoto_ = nullptr;
@@ -199,6 +205,7 @@ class MainWindow : public QMainWindow {
   LogView* logView_ = nullptr;
   BoardControls* boardControls_ = nullptr;
   KnotTable* knotTable_ = nullptr;
+  BlockKnotTable* blockKnotTable_ = nullptr;
   PanelControls* panelControls_ = nullptr;
   ImagePane* panelPane_ = nullptr;
   QSlider* blendSlider_ = nullptr;

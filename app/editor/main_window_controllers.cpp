@@ -1,6 +1,7 @@
 // MainWindow: its controllers made on its views, their voices (log, message boxes, status bar) routed to
 // the window, and their news forwarded as the window's signals.
 #include <QActionGroup>
+#include <QDockWidget>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -21,6 +22,8 @@ void MainWindow::createControllers(RenderSettings settings) {
   logBoard_ = new LogBoardController(
       context, faces_,
       {logView_, boardControls_, knotTable_, panelControls_, panelPane_, viewport_, cutView_});
+  blockKnots_ = new BlockKnotsController(context, blockKnotTable_, findChild<QDockWidget*>("blockKnotsDock"),
+                                         annotationLayer_);
   exports_ = new ExportController(context, settings, viewport_);
   files_ = new FilesController(context, faces_);
   cutPhoto_ = new CutPhotoController(context, cutView_);
@@ -30,7 +33,7 @@ void MainWindow::createControllers(RenderSettings settings) {
   cutDisplayBar_->addActions(cutPhoto_->displayGroup()->actions());
   connect(appearance_, &AppearanceController::cutMade, cutPhoto_, &CutPhotoController::modelSideChanged);
   for (EditorController* controller : std::initializer_list<EditorController*>{
-           faces_, rings_, texture_, appearance_, logBoard_, exports_, files_, cutPhoto_})
+           faces_, rings_, texture_, appearance_, logBoard_, blockKnots_, exports_, files_, cutPhoto_})
     connectController(controller);
   connect(facesView_, &FacesView::photoDropped, files_, &FilesController::dropPhoto);
   connect(facesView_, &FacesView::documentDropped, files_, &FilesController::openInstead);

@@ -1,11 +1,13 @@
-// MainWindow: the docks of logs and boards (docs/editor.md, "Logs and boards"): the "Log view" dock
-// (widgets/log_view.hpp), the "Board" dock (placement, the knot table and the panel choice) and the "Panel"
-// view. LogBoardController drives them.
+// MainWindow: the docks of knots, logs and boards: the "Knots" dock, the block's knot table
+// (docs/editor.md, "Knots in the block"; BlockKnotsController drives it), and (docs/editor.md, "Logs and
+// boards") the "Log view" dock (widgets/log_view.hpp), the "Board" dock (placement, the log's knot table and
+// the panel choice) and the "Panel" view (LogBoardController drives them).
 #include <QDockWidget>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
+#include "block_knot_table.hpp"
 #include "board_controls.hpp"
 #include "image_pane.hpp"
 #include "knot_table.hpp"
@@ -14,6 +16,20 @@
 #include "panel_controls.hpp"
 
 namespace kerf {
+
+void MainWindow::createBlockKnotsDock() {
+  blockKnotTable_ = new BlockKnotTable(this);
+  auto* dock = new QDockWidget(tr("Knots"), this);
+  dock->setObjectName("blockKnotsDock");
+  dock->setToolTip(tr("The block's knots: where each branch runs, how thick it is and when it died"));
+  dock->setWidget(blockKnotTable_);
+  addDockWidget(Qt::RightDockWidgetArea, dock);
+  if (auto* parameters = findChild<QDockWidget*>("parametersDock")) {
+    tabifyDockWidget(parameters, dock);
+    parameters->raise();
+  }
+  dock->hide();  // shown with a block that has knots (BlockKnotsController)
+}
 
 void MainWindow::createLogDocks() {
   logView_ = new LogView(this);

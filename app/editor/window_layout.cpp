@@ -65,11 +65,14 @@ void WindowLayout::arrangeDocks() {
       window_->tabifyDockWidget(first, d);
     }
   }
-  if (QDockWidget* board = dock("boardDock"); board && parameters) {
-    const bool shown = board->isVisible();
-    window_->addDockWidget(Qt::RightDockWidgetArea, board);
-    window_->tabifyDockWidget(parameters, board);
-    board->setVisible(shown);
+  // The block's knots and the board: tabs beside the parameters, shown while there is something in them.
+  for (const char* name : {"blockKnotsDock", "boardDock"}) {
+    QDockWidget* tab = dock(name);
+    if (!tab || !parameters) continue;
+    const bool shown = tab->isVisible();
+    window_->addDockWidget(Qt::RightDockWidgetArea, tab);
+    window_->tabifyDockWidget(parameters, tab);
+    tab->setVisible(shown);
   }
   for (QDockWidget* d : {parameters, cut})
     if (d) {

@@ -22,7 +22,7 @@ class WindowLayout : public QObject {
 
  public:
   // Bump when the docks or the central splitter change, so that old saved states are ignored.
-  static constexpr int kVersion = 3;
+  static constexpr int kVersion = 4;
   // The docks of the small, hidden-until-wanted group, by object name.
   static QStringList smallDockNames();
 

@@ -1,7 +1,8 @@
 #pragma once
 // The editor on a freshly written demo block, for the editor tests: the demo's photos at `facePixels`
 // a side (the model's faces rendered at the same resolution), the window shown at `size` and the document
-// loaded. Null if the window never showed or the demo did not load within the timeout.
+// loaded; `knot`: with the demo's knot (DemoOptions::knot) and its two marks. Null if the window never
+// showed or the demo did not load within the timeout.
 #include <QSignalSpy>
 #include <QtTest>
 #include <memory>
@@ -17,10 +18,11 @@ inline QString artifact(const QString& name) {
 }
 
 inline std::unique_ptr<MainWindow> openDemoWindow(const QString& folder, int facePixels, QSize size = {},
-                                                  int timeoutMs = 120000) {
+                                                  int timeoutMs = 120000, bool knot = false) {
   DemoOptions options;
   options.facePixels = facePixels;
   options.samples = 1;
+  options.knot = knot;
   const QString project = QString::fromStdString(writeDemo(folder.toStdString(), options).project.string());
   const float pxPerMm = facePixels / demoProject().block.size().x;  // faces as sharp as the photos
   auto window = std::make_unique<MainWindow>(RenderSettings{pxPerMm, 1});

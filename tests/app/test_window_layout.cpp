@@ -1,13 +1,17 @@
 // The editor's default layout (issue 20 item 1): at 1600 x 1000 and at 1366 x 768 the faces, the 3D block
 // and the true-scale cut (shown, with a cut) are all visible and take most of the window; the log and the
 // history are hidden until wanted; a layout the user made is remembered (per user, QSettings), one saved by
-// another layout version is not, and View > Reset Layout brings the default back.
+// another layout version is not, and View > Reset Layout brings the default back. With a knotted block,
+// the Knots tab raised keeps the wood's share at 1366 x 768.
 #include <QDockWidget>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "block_knot_table.hpp"
 #include "cut_view.hpp"
 #include "demo_window.hpp"
 #include "document.hpp"
@@ -49,6 +53,7 @@ class TestWindowLayout : public QObject {
   void initTestCase();
   void woodFillsTheWindow_data();
   void woodFillsTheWindow();
+  void knotTableKeepsTheWoodsShare();
   void rememberedPerUser();
   void otherLayoutVersionIsIgnored();
   void resetLayoutBringsTheDefaultBack();
@@ -101,6 +106,28 @@ void TestWindowLayout::woodFillsTheWindow() {
   }
   const double share = shareOfWindow(window.get(), wood);
   qInfo("%dx%d: faces + block + cut cover %.1f %% of the window", size.width(), size.height(), 100 * share);
+  QVERIFY2(share > 0.5, qPrintable(QStringLiteral("the wood covers only %1 of the window").arg(share)));
+  QSettings().clear();
+}
+
+// A block with a knot at 1366 x 768: the Knots dock is a tab beside the parameters; raised, the table fits
+// its width and the wood keeps more than half of the window.
+void TestWindowLayout::knotTableKeepsTheWoodsShare() {
+  QSettings().clear();
+  auto window = testing::openDemoWindow(dir_.filePath("knotty"), 64, {1366, 768}, kTimeoutMs, true);
+  QVERIFY(window);
+  QDockWidget* knots = dock(*window, "blockKnotsDock");
+  QVERIFY(knots->isVisible() || window->tabifiedDockWidgets(dock(*window, "parametersDock")).contains(knots));
+  knots->raise();
+  QTest::qWait(50);
+  QVERIFY(knots->isVisible());
+  QCOMPARE(window->size(), QSize(1366, 768));
+  QCOMPARE(window->blockKnotTable()->table()->rowCount(), 1);
+  QVERIFY2(!window->blockKnotTable()->table()->horizontalScrollBar()->isVisible(),
+           "the knot table's columns do not fit the dock");
+  const QList<const QWidget*> wood = {window->facesView(), window->viewport(), window->cutView()};
+  const double share = shareOfWindow(window.get(), wood);
+  qInfo("1366x768 with the Knots tab: faces + block + cut cover %.1f %% of the window", 100 * share);
   QVERIFY2(share > 0.5, qPrintable(QStringLiteral("the wood covers only %1 of the window").arg(share)));
   QSettings().clear();
 }
