@@ -13,11 +13,14 @@
 
 namespace kerf {
 
-inline constexpr int kOiioCodecsVersion = 1;
+inline constexpr int kOiioCodecsVersion = 2;
 
 struct OiioHeader {
+  // As the image is shown: a photo whose EXIF Orientation says it was taken turned (a phone held upright,
+  // 5 to 8) has its width and height swapped here, and readPixels turns its pixels the same way.
   int width = 0, height = 0, channels = 0;
-  std::string format;  // OpenImageIO's format name: "jpeg", "tiff", "openexr" ...
+  int orientation = 1;  // the file's EXIF Orientation (1 = as stored, 2 to 8 = mirrored and / or turned)
+  std::string format;   // OpenImageIO's format name: "jpeg", "tiff", "openexr" ...
 };
 
 // One subimage to write: the pixels and how OpenImageIO stores them.

@@ -1,6 +1,8 @@
 // The OpenImageIO module (io/oiio_codecs.hpp): every image format but PNG, loaded on first use. Built as
 // its own shared module, not into kerf_core: nothing here may throw out of it, and it uses nothing of
 // Kerf's but the Image struct.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -24,12 +26,47 @@ std::unique_ptr<OIIO::ImageInput> openInput(const std::string& path, std::string
   return in;
 }
 
+std::size_t countNonFinite(const std::vector<float>& values, int channels);
+
+// EXIF Orientation (TIFF tag 274): how the stored pixels must be turned and mirrored to be seen as the
+// photographer saw them. Phones store upright photos sideways with 6 or 8. Out-of-range values: as stored.
+int orientationOf(const OIIO::ImageSpec& spec) {
+  const int orientation = spec.get_int_attribute("Orientation", 1);
+  return orientation >= 1 && orientation <= 8 ? orientation : 1;
+}
+
+// A photo with an EXIF orientation, read through an ImageBuf and turned upright by OpenImageIO's own
+// reorient, then into `out` (its channels, or RGB with grey replicated and alpha dropped).
+std::string readReoriented(const std::string& path, const OIIO::ImageSpec& config, Image& out,
+                           std::size_t& nonFinite) {
+  OIIO::ImageBuf stored(path, 0, 0, nullptr, &config);
+  if (!stored.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return stored.geterror();
+  OIIO::ImageBuf upright = OIIO::ImageBufAlgo::reorient(stored);
+  if (upright.has_error()) return upright.geterror();
+  stored.reset();  // the stored copy is not needed any more
+  const int channels = upright.spec().nchannels;
+  if (upright.spec().width != out.width || upright.spec().height != out.height ||
+      (out.channels != channels && out.channels != 3))
+    return "the file changed while being read";
+  if (out.channels != channels) {
+    const int order[3] = {0, channels >= 3 ? 1 : 0, channels >= 3 ? 2 : 0};
+    upright = OIIO::ImageBufAlgo::channels(upright, 3, order);
+    if (upright.has_error()) return upright.geterror();
+  }
+  if (!upright.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, out.pixels.data()))
+    return upright.geterror();
+  nonFinite = countNonFinite(out.pixels, out.channels);
+  return {};
+}
+
 std::string readHeader(const std::string& path, OiioHeader& header) try {
   std::string error;
   auto in = openInput(path, error);
   if (!in) return error;
-  header.width = in->spec().width;
-  header.height = in->spec().height;
+  header.orientation = orientationOf(in->spec());
+  const bool turned = header.orientation >= 5;  // 5 to 8 turn the image by a quarter
+  header.width = turned ? in->spec().height : in->spec().width;
+  header.height = turned ? in->spec().width : in->spec().height;
   header.channels = in->spec().nchannels;
   header.format = in->format_name();
   return {};
@@ -50,10 +87,16 @@ std::string readPixels(const std::string& path, Image& out, std::size_t& nonFini
   auto in = openInput(path, error);
   if (!in) return error;
   const OIIO::ImageSpec& spec = in->spec();
+  nonFinite = 0;
+  if (orientationOf(spec) != 1) {
+    in.reset();
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return readReoriented(path, config, out, nonFinite);
+  }
   if (spec.width != out.width || spec.height != out.height ||
       (out.channels != spec.nchannels && out.channels != 3))
     return "the file changed while being read";
-  nonFinite = 0;
   if (out.channels == spec.nchannels) {
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out.pixels.data()))
       return in->geterror();

@@ -219,3 +219,91 @@ TEST(BmpCodec, BmpReadsAsOpenImageIOReadsIt) {
   ASSERT_EQ(oiio.channels, 3);
   expectSamePixels(readImage(path, true), oiio, "BMP");
 }
+
+namespace {
+
+// A 4 x 2 photo stored with EXIF Orientation `orientation`: grey where (column, row) is coded in red and
+// green, 8 bits, so that every pixel can be told where it came from.
+void writeOrientedTiff(const fs::path& path, int orientation, int channels) {
+  OIIO::ImageSpec spec(4, 2, channels, OIIO::TypeDesc::UINT8);
+  spec.attribute("Orientation", orientation);
+  std::vector<unsigned char> pixels;
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      pixels.push_back(static_cast<unsigned char>(40 * x + 20));
+      if (channels >= 3) {
+        pixels.push_back(static_cast<unsigned char>(100 * y + 50));
+        pixels.push_back(7);
+      }
+      if (channels == 4) pixels.push_back(255);
+    }
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out && out->open(path.string(), spec)) << OIIO::geterror();
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  ASSERT_TRUE(out->close());
+}
+
+}  // namespace
+
+// Phones store an upright photo sideways and say so in EXIF Orientation; a cube's faces are square, so a
+// face photo read as stored would be accepted turned by a quarter and every ring would lie across.
+TEST(ImageOrientation, PhotosAreReadAsTheyAreShownNotAsStored) {
+  // Stored (x, y) of the pixel shown at (u, v) of the upright image, for a 4 x 2 stored image (EXIF
+  // 2.3 Sec. 4.6.4 Orientation: 2 mirrored, 3 turned half round, 6 row 0 on the right, 8 row 0 on the
+  // left).
+  struct Case {
+    int orientation, width, height;
+    int (*x)(int u, int v), (*y)(int u, int v);
+  };
+  const Case cases[] = {
+      {1, 4, 2, [](int u, int) { return u; }, [](int, int v) { return v; }},
+      {2, 4, 2, [](int u, int) { return 3 - u; }, [](int, int v) { return v; }},
+      {3, 4, 2, [](int u, int) { return 3 - u; }, [](int, int v) { return 1 - v; }},
+      {6, 2, 4, [](int, int v) { return v; }, [](int u, int) { return 1 - u; }},
+      {8, 2, 4, [](int, int v) { return 3 - v; }, [](int u, int) { return u; }},
+  };
+  for (const int channels : {3, 4, 1})
+    for (const Case& c : cases) {
+      SCOPED_TRACE("orientation " + std::to_string(c.orientation) + ", " + std::to_string(channels) +
+                   " channels");
+      const fs::path file =
+          scratch("o" + std::to_string(c.orientation) + "_" + std::to_string(channels) + ".tif");
+      writeOrientedTiff(file, c.orientation, channels);
+      EXPECT_EQ(readImageSize(file), glm::ivec2(c.width, c.height));
+      const Image image = readImage(file);
+      ASSERT_EQ(image.width, c.width);
+      ASSERT_EQ(image.height, c.height);
+      ASSERT_EQ(image.channels, 3);
+      for (int v = 0; v < c.height; ++v)
+        for (int u = 0; u < c.width; ++u) {
+          const float* p = image.pixel(u, v);
+          EXPECT_NEAR(p[0] * 255.0f, 40 * c.x(u, v) + 20, 0.01f) << "at " << u << ", " << v;
+          if (channels >= 3)
+            EXPECT_NEAR(p[1] * 255.0f, 100 * c.y(u, v) + 50, 0.01f) << "at " << u << ", " << v;
+          else
+            EXPECT_EQ(p[1], p[0]);  // grey replicated
+        }
+      if (channels == 4) {
+        EXPECT_EQ(readImage(file, true).channels, 4);
+      }
+    }
+}
+
+// A JPEG from a phone held upright (Orientation 6): read upright.
+TEST(ImageOrientation, AnUprightPhoneJpegIsReadUpright) {
+  const fs::path file = scratch("phone.jpg");
+  OIIO::ImageSpec spec(64, 32, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("Orientation", 6);
+  std::vector<unsigned char> pixels(64 * 32 * 3, 30);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 8; ++x) pixels[(y * 64 + x) * 3 + 0] = 230;  // stored: a red band on the left
+  auto out = OIIO::ImageOutput::create(file.string());
+  ASSERT_TRUE(out && out->open(file.string(), spec)) << OIIO::geterror();
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  ASSERT_TRUE(out->close());
+  const Image image = readImage(file);
+  ASSERT_EQ(image.width, 32);
+  ASSERT_EQ(image.height, 64);
+  EXPECT_GT(image.pixel(16, 2)[0], 0.8f);   // shown: the band along the top
+  EXPECT_LT(image.pixel(16, 40)[0], 0.2f);  // and nowhere else
+}
