@@ -28,10 +28,11 @@ constexpr int kTilesUnit = KnotTables::kTextureCount;
 
 GpuBoardRenderer::GpuBoardRenderer() : program_(std::make_unique<QOpenGLShaderProgram>()) {
   const QString vertex = "#version 330 core\n" + WoodProgram::shaderFile("image_plane.vert");
-  const QString fragment = "#version 330 core\n" + WoodProgram::parameterDeclarations() +
-                           WoodProgram::shaderFile("knot_death.glsl") +
-                           WoodProgram::shaderFile("knots.glsl") + "\n#line 1 1\n" +
-                           WoodProgram::shaderFile("board_knots.frag");
+  const QString fragment =
+      "#version 330 core\n" + WoodProgram::parameterDeclarations() +
+      WoodProgram::shaderFile("kernels/noise.glsl") + WoodProgram::shaderFile("kernels/knot_checks.glsl") +
+      WoodProgram::shaderFile("knot_death.glsl") + WoodProgram::shaderFile("knots.glsl") + "\n#line 1 1\n" +
+      WoodProgram::shaderFile("board_knots.frag");
   if (!program_->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
       !program_->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) || !program_->link()) {
     throw std::runtime_error("knot shader failed to build: " + program_->log().toStdString());

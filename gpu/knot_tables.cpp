@@ -86,6 +86,7 @@ void KnotTables::uploadLog(const KnotField& field, const WoodColorMap& colors, s
     info[4 * i] = knot.distanceStep;
     info[4 * i + 1] = static_cast<float>(knot.samples());
     info[4 * i + 2] = knot.deathDistance;
+    info[4 * i + 3] = static_cast<float>(knots[i]);  // the log's index: the seed of the knot's checks
     const std::size_t from = static_cast<std::size_t>(knots[i]) * kCells;
     for (int t = 0; t < kTimes; ++t) {
       const std::size_t row = static_cast<std::size_t>(i / kNoiseKnotsPerRow) * kTimes + t;

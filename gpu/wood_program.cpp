@@ -35,8 +35,8 @@ QString WoodProgram::fragmentSource(const QString& fragmentFile, WoodSource sour
   if (source == WoodSource::Board) text += "#define KERF_BOARD_WOOD 1\n";
   // The model's single-source kernels (core/model/kernels) around the GPU back-end (wood_model.glsl).
   text += parameterDeclarations() + QString("const int kMaxBlockKnots = %1;\n").arg(kMaxBlockKnotsOnGpu) +
-          shaderFile("kernels/noise.glsl") + shaderFile("knot_death.glsl") + shaderFile("wood_model.glsl") +
-          shaderFile("kernels/wood.glsl");
+          shaderFile("kernels/noise.glsl") + shaderFile("kernels/knot_checks.glsl") +
+          shaderFile("knot_death.glsl") + shaderFile("wood_model.glsl") + shaderFile("kernels/wood.glsl");
   if (source == WoodSource::Board) text += shaderFile("knots.glsl") + shaderFile("board_wood.glsl");
   return text + "\n#line 1 1\n" + shaderFile(fragmentFile);
 }
@@ -92,6 +92,7 @@ void WoodProgram::setModel(const WoodModel& model) {
                              std::min(knots[i].deathTime, std::numeric_limits<float>::max()));
     program_.setUniformValue(("u_blockKnotUp" + index).constData(), toQt(model.knots().up(i)));
     program_.setUniformValue(("u_blockKnotSide" + index).constData(), toQt(model.knots().side(i)));
+    program_.setUniformValue(("u_blockKnotId" + index).constData(), knots[i].id);
   }
 
   const GrowthRates& rates = field.rates();

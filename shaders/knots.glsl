@@ -17,7 +17,7 @@ uniform int u_azimuths;
 
 // Knots (Table 2), board-culled, index k = 0..n-1.
 uniform sampler2D u_knotTables;  // RG32F, samples x knots: z(d_j), omega(d_j)
-uniform sampler2D u_knotInfo;    // RGBA32F, knots x 1: distance step, sample count, death distance, -
+uniform sampler2D u_knotInfo;    // RGBA32F, knots x 1: distance step, sample count, death distance, log index
 uniform sampler2D u_knotNoise;   // RG32F: speed noise, outline noise; 64 x 64 per knot, 32 knots a row
 
 // Colour map (Sec. 4.3), wrapped into rows of u_colorRowLength texels.
@@ -26,7 +26,8 @@ uniform int u_colorCount;
 uniform int u_colorRowLength;
 
 // The knot parameters are the schema's uniforms (core/params/wood_parameters.def, group "knots",
-// declared by glslUniformDeclarations() ahead of this file), set from the field's KnotSettings.
+// declared by glslUniformDeclarations() ahead of this file), set from the field's KnotSettings. The checks
+// are the single-source kernel core/model/kernels/knot_checks.glsl (with kernels/noise.glsl), assembled ahead.
 
 const float kKnotPi = 3.14159265358979;
 const float kKnotTwoPi = 6.28318530717959;
@@ -138,6 +139,7 @@ struct KnotSample {
   float darkness;
   float deadShade;
   bool outline;
+  float checks;
   int knotsInReach;
 };
 
@@ -151,6 +153,7 @@ KnotSample evaluateKnots(vec3 p, int first, int count) {
   r.darkness = 0.0;
   r.deadShade = 0.0;
   r.outline = false;
+  r.checks = 1.0;
   r.knotsInReach = 0;
   vec2 pith = stemPithAt(p.z);
   float qx = p.x - pith.x, qy = p.y - pith.y;
@@ -193,6 +196,8 @@ KnotSample evaluateKnots(vec3 p, int first, int count) {
       float width = P.knotOutlineWidth * (1.0 + P.knotOutlineNoise * noise.y);
       if (inDeadKnotOutline(ts, tb, tDeath, width)) r.outline = true;
     }
+    float section = fraction * rs * min(ts, tDeath);
+    r.checks = min(r.checks, knotCheckShade(int(info.w), db, section, beta, ds, ts, tDeath, P.knotChecks));
     applyKnotDeath(ts, tAlive, tDeath, k, beta, tb, delta);  // Eq. 5
     r.deadShade = max(r.deadShade, deadKnotShade(ts, tb, tDeath));
     knotMin = min(knotMin, tb);
@@ -225,5 +230,6 @@ vec3 knotColor(KnotSample s) {
   vec3 c = knotColorMapAt(s.time);
   c -= (s.darkness + s.deadShade) * P.knotDarkening;
   if (s.outline) c *= P.knotOutlineShade;
+  c *= s.checks;
   return clamp(c, vec3(0.0), vec3(1.0));
 }

@@ -108,6 +108,7 @@ uniform float u_blockKnotTaperAge[kMaxBlockKnots];  // years
 uniform float u_blockKnotDeath[kMaxBlockKnots];     // BlockKnot::deathTime, years; a huge number: alive
 uniform vec3 u_blockKnotUp[kMaxBlockKnots];         // BlockKnots::up/side: the frame of beta (knotAngleOf)
 uniform vec3 u_blockKnotSide[kMaxBlockKnots];
+uniform int u_blockKnotId[kMaxBlockKnots];          // BlockKnot::id: the seed of the knot's checks
 // knotSmoothMinOf (Eq. 2) and the dead knot's Eq. 5 and Sec. 4.3: knot_death.glsl, assembled ahead.
 
 // knotAngleOf: beta around the knot's axis, 0 beside it, pi/2 towards the pith axis' direction.
@@ -142,7 +143,7 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
   darkness = 0.0;
   shade = 1.0;
   if (u_blockKnotCount == 0 || !(stemRadius > 1e-3)) return stemTime;
-  float knotMin = stemTime, sumSmoothing = 0.0, deadShade = 0.0;
+  float knotMin = stemTime, sumSmoothing = 0.0, deadShade = 0.0, checks = 1.0;
   int inReach = 0;
   for (int i = 0; i < u_blockKnotCount; ++i) {
     float distance = blockKnotDistance(i, p);
@@ -174,6 +175,16 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
     }
     knotMin = min(knotMin, time);
     sumSmoothing += window * delta;
+    // Checks (knot_checks.glsl) in the knot's section (mm), frozen at its death.
+    float section = speed * P.ringWidth * min(stemTime, deathTime);
+    if (P.knotChecks > 0.0 && distance < section) {
+      vec3 rel = p - u_blockKnotOrigin[i];
+      vec3 u = u_blockKnotDirection[i];
+      float along = rel.x * u.x + rel.y * u.y + rel.z * u.z;
+      float c = P.ringWidth / P.knotStemRadius;
+      checks = min(checks, knotCheckShade(u_blockKnotId[i], distance, section, blockKnotAngle(i, p), along,
+                                          stemTime * c, deathTime * c, P.knotChecks));
+    }
     if (dead) {
       float c = P.ringWidth / P.knotStemRadius;
       float ts = stemTime * c, tDeath = deathTime * c;
@@ -188,6 +199,7 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
     ++inReach;
   }
   darkness += deadShade;
+  shade *= checks;
   return inReach > 0 ? max(knotMin + sumSmoothing, 0.0) : stemTime;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
+#include "model/knot_check_kernels.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
@@ -56,7 +57,7 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
   BlockKnotSample out;
   out.time = stemTime;
   const KnotSettings& s = settings_;
-  float knotMin = stemTime, sumSmoothing = 0.0f, deadShade = 0.0f;
+  float knotMin = stemTime, sumSmoothing = 0.0f, deadShade = 0.0f, checks = 1.0f;
   for (std::size_t i = 0; i < knots_.size(); ++i) {
     const BlockKnot& knot = knots_[i];
     const float distance = knotAxisDistance(&knot.origin.x, &knot.direction.x, p);
@@ -64,15 +65,23 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
     const float growing = std::min(stemTime, knot.deathTime);
     const float speed = knotSpeedAt(knot.speed, knot.taper, knot.taperAge, growing, maxKnotSpeed(s));
     KnotDeathAt<float> death{knot.deathTime, 0.0f};
-    if (knot.dead()) {
-      const float rel[3] = {p.x - knot.origin.x, p.y - knot.origin.y, p.z - knot.origin.z};
-      death.beta = knotAngleOf(rel, &knot.direction.x, up_[i], side_[i]);
-    }
+    const float rel[3] = {p.x - knot.origin.x, p.y - knot.origin.y, p.z - knot.origin.z};
+    if (knot.dead()) death.beta = knotAngleOf(rel, &knot.direction.x, up_[i], side_[i]);
     const KnotTerm<float> term =
         knotTerm(stemTime, distance, stemRadius, speed, ringWidth_, s.knotSmoothStem, s, death);
     if (!(term.window > 0.0f)) continue;  // out of reach: G unchanged, bit for bit
     knotMin = std::min(knotMin, term.time);
     sumSmoothing += term.smoothing;  // Eq. 6
+    // Checks (Kerf's own, model/kernels/knot_checks.glsl) in the knot's section (mm), frozen at its death.
+    const float section = speed * ringWidth_ * growing;
+    if (s.knotChecks > 0.0f && distance < section) {
+      const glm::vec3& u = knot.direction;
+      const float along = rel[0] * u.x + rel[1] * u.y + rel[2] * u.z;
+      const float beta = knot.dead() ? death.beta : knotAngleOf(rel, &u.x, up_[i], side_[i]);
+      const float c = stemTimePerYear(ringWidth_, s);
+      checks = std::min(checks, knotCheckShade(knot.id, distance, section, beta, along, stemTime * c,
+                                               knot.deathTime * c, s.knotChecks));
+    }
     if (knot.dead()) {
       // Sec. 4.3 as the log: the bark ring where the knot's surface froze, the dead wood darker.
       const float c = stemTimePerYear(ringWidth_, s);
@@ -94,6 +103,7 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
   }
   if (out.knotsInReach > 0) out.time = std::max(knotMin + sumSmoothing, 0.0f);
   out.darkness += deadShade;  // the log's colour: (darkness + dead shade) x knots.darkening
+  out.shade *= checks;
   return out;
 }
 

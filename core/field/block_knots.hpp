@@ -20,6 +20,7 @@
 // stem time = G w / knots.stem_radius. The knot stops thickening, the stem's rings are no longer
 // continuous with it (it is encased: G_k jumps at its surface), the sweep inverts (the butterfly), and it
 // gets the dead darkening and the dark bark ring (no outline noise: a block knot has no noise tables).
+// Every knot gets its checks (knots.checks, Kerf's own: model/kernels/knot_checks.glsl), as the log's do.
 #include <algorithm>
 #include <cmath>
 #include <glm/vec3.hpp>
@@ -152,7 +153,8 @@ KnotTerm<T> knotTerm(const T& stemTime, const T& knotDistance, const T& stemRadi
 struct BlockKnotSample {
   float time = 0;      // G_k (years)
   float darkness = 0;  // the share of knots.darkening to subtract (Sec. 4.3): 0..1, plus a dead knot's shade
-  float shade = 1;     // colour factor: knots.outline_shade inside a dead knot's bark ring, else 1 (Sec. 4.3)
+  float shade = 1;  // colour factor: knots.outline_shade inside a dead knot's bark ring (Sec. 4.3), else 1,
+                    // times the knot checks' (knots.checks, model/kernels/knot_checks.glsl)
   int knotsInReach = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <numbers>
 
+#include "model/knot_check_kernels.hpp"
 #include "model/noise.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
@@ -204,6 +205,9 @@ KnotFieldSample KnotField::evaluate(const glm::vec3& p, std::span<const int> kno
           s.knotOutlineWidth * (1.0f + s.knotOutlineNoise * noiseAt(outlineNoise_, index, beta, ts));
       if (inDeadKnotOutline(ts, tb, tDeath, width)) out.outline = true;
     }
+    // Checks (Kerf's own, model/kernels/knot_checks.glsl) in the knot's section, frozen at its death.
+    const float section = fraction * rs * std::min(ts, tDeath);
+    out.checks = std::min(out.checks, knotCheckShade(index, db, section, beta, ds, ts, tDeath, s.knotChecks));
     // Dead (Eq. 5, Sec. 4.2.2): the knot stops thickening, its union with the stem sharpens and inverts.
     applyKnotDeath(ts, tAlive, tDeath, k, beta, s, tb, delta);
     // Sec. 4.3: a dead knot, where the stem grew on after its death, is darker.
@@ -229,6 +233,7 @@ glm::vec3 KnotField::color(const KnotFieldSample& sample, const WoodColorMap& ma
   glm::vec3 c = map.at(sample.time);
   c -= (sample.darkness + sample.deadShade) * settings_.knotDarkening;  // Sec. 4.3
   if (sample.outline) c *= settings_.knotOutlineShade;
+  c *= sample.checks;
   return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 

@@ -117,6 +117,7 @@ struct KnotFieldSample {
   float darkness = 0;      // 0..1, how much of knots.darkening to subtract
   float deadShade = 0;     // extra darkening of dead knot wood (x knots.darkening)
   bool outline = false;    // inside the dark outline of a dead knot
+  float checks = 1;        // colour factor of the knots' checks (knots.checks): 1 = no crack
   int knotsInReach = 0;    // knots whose window was non-zero here
 };
 

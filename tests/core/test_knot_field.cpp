@@ -9,33 +9,16 @@
 
 #include "field/knot_field.hpp"
 #include "field/log_model.hpp"
+#include "round_log.hpp"
 #include "util/error.hpp"
 
 using namespace kerf;
+using kerf::testing::roundLog;
+using kerf::testing::straightKnot;
 
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
-
-// A straight, round log: pith at (0, 0), radius 100 mm, 1000 mm long.
-LogModel roundLog() {
-  LogModel log;
-  log.stem.heightStep = 10.0f;
-  log.stem.azimuths = 36;
-  log.stem.pith.assign(101, glm::vec2(0.0f));
-  log.stem.radii.assign(101 * 36, 100.0f);
-  return log;
-}
-
-// A horizontal knot along azimuth `azimuth` at height z (mm), dead from `death` mm on.
-Knot straightKnot(float z, float azimuth, float death = std::numeric_limits<float>::infinity()) {
-  Knot k;
-  k.distanceStep = 10.0f;
-  k.heights.assign(12, z);
-  k.azimuths.assign(12, azimuth);
-  k.deathDistance = death;
-  return k;
-}
 
 // Settings without noise or slow-down: knot speed = 0.2 x stem speed exactly.
 KnotSettings plainSettings() {

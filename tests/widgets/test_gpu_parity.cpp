@@ -179,6 +179,43 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
     compare(cut, renderer_->renderCut(model, plane, 2.5f), "dead_knots_cut");
   }
 
+  // Knot checks (knots.checks, Kerf's own: core/model/kernels/knot_checks.glsl): a cut across a thick dead
+  // knot's axis past its death, close up (12 px/mm). The cracks are in the CPU's picture (it differs from
+  // knots.checks = 0 on a few pixels, each darker) and the GPU draws the same.
+  void blockKnotChecks() {
+    Project project = demoProject();
+    project.params.knotStemRadius = 90.0f;
+    project.params.knotChecks = 2.0f;
+    const WoodParameters& p = project.params;
+    const PithAxis axis = PithAxis::fromAngles(p.pithOrigin, p.pithTilt, p.pithAzimuth);
+    const glm::vec3 target(-10, -12, 14);
+    const glm::vec3 onPith = axis.origin + glm::dot(target - axis.origin, axis.direction) * axis.direction;
+    BlockKnot knot;
+    knot.id = 5;
+    knot.origin = onPith;
+    knot.direction = glm::normalize(target - onPith);
+    knot.speed = 0.3f;
+    knot.deathTime = 0.5f * glm::length(target - onPith) / p.ringWidth;
+    project.knots.push_back(knot);
+    const WoodModel model(project);
+    const CutPlane plane(onPith + 0.9f * (target - onPith), knot.direction);
+    const Image cut = renderCut(model, plane, 12.0f);
+    Project without = project;
+    without.params.knotChecks = 0.0f;
+    const Image plain = renderCut(WoodModel(without), plane, 12.0f);
+    int cracked = 0, lighter = 0;
+    for (std::size_t i = 0; i + 2 < cut.pixels.size(); i += static_cast<std::size_t>(cut.channels)) {
+      const float a = cut.pixels[i] + cut.pixels[i + 1] + cut.pixels[i + 2];
+      const float b = plain.pixels[i] + plain.pixels[i + 1] + plain.pixels[i + 2];
+      cracked += a < 0.8f * b;
+      lighter += a > b + 1e-6f;
+    }
+    qInfo() << "knot checks: cracked pixels" << cracked << "of" << cut.pixels.size() / cut.channels;
+    QVERIFY2(cracked > 30, qPrintable(QString("%1 cracked pixels").arg(cracked)));
+    QCOMPARE(lighter, 0);
+    compare(cut, renderer_->renderCut(model, plane, 12.0f), "knot_checks_cut");
+  }
+
  private:
   // Two knots from the pith through the block; the second tapers (issue 19 item 2). Dead: each dies about
   // half-way to its target, so the block shows it alive, dead and encased.

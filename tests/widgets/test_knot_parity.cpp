@@ -108,6 +108,38 @@ class KnotParityTest : public QObject, kerf::testing::GlRendererFixture<GpuBoard
     QCOMPARE(maxAbsDifference(a, b), 0.0);
   }
 
+  // Knot checks (knots.checks, Kerf's own: core/model/kernels/knot_checks.glsl) close up: a 24 mm board
+  // across a dead knot of a random log, 25 mm past its death, at 25 px/mm with strong checks. The cracks
+  // are in the CPU's picture (darker pixels than without checks) and the GPU draws the same.
+  void deadKnotChecksCloseUp() {
+    const LogModel log = generateRandomLog({.seed = 3});
+    int knot = -1;
+    for (int k = 0; k < static_cast<int>(log.knots.size()) && knot < 0; ++k) {
+      const Knot& candidate = log.knots[k];  // dies 20-60 mm from the pith, away from the log's ends
+      if (candidate.deathDistance > 20.0f && candidate.deathDistance < 60.0f &&
+          candidate.heights[0] > 300.0f && candidate.heights[0] < 1100.0f)
+        knot = k;
+    }
+    QVERIFY(knot >= 0);
+    const WoodColorMap colors = woodColorMapFromParameters(WoodParameters{}, log.stem.maxRadius());
+    const Board board =
+        boardAcrossKnot(log, knot, log.knots[knot].deathDistance + 25.0f, {24.0f, 24.0f, 10.0f});
+    KnotSettings settings, none;
+    settings.knotChecks = 2.0f;
+    none.knotChecks = 0.0f;
+    BoardRenderOptions options;
+    options.resolution = 600;
+    const Image plain = renderBoardFace(KnotField(log, none), colors, board, options);
+    const Image cpu = renderBoardFace(KnotField(log, settings), colors, board, options);
+    int cracked = 0;
+    for (std::size_t i = 0; i + 2 < cpu.pixels.size(); i += static_cast<std::size_t>(cpu.channels))
+      cracked += cpu.pixels[i] + cpu.pixels[i + 1] + cpu.pixels[i + 2] <
+                 0.8f * (plain.pixels[i] + plain.pixels[i + 1] + plain.pixels[i + 2]);
+    qInfo() << "knot" << knot << "checks: cracked pixels" << cracked;
+    QVERIFY2(cracked > 50, qPrintable(QString("%1 cracked pixels").arg(cracked)));
+    compareBoard(log, colors, board, 600, "knots_checks_close_up", settings);
+  }
+
  private:
   static const LogModel* gran() { return kerf::testing::granLog(); }
 
