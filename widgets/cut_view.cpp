@@ -155,6 +155,7 @@ void CutView::setBoardWood(std::shared_ptr<const BoardWood> wood) {
   boardWood_ = std::move(wood);
   changedInteractively();
   update();
+  emit boardWoodChanged();
 }
 
 void CutView::setCutPlane(const CutPlaneSetting& setting) {

@@ -64,7 +64,8 @@ struct CutPhotoPicture {
   CutPlaneSetting plane;
   QImage difference;  // null until computed
   std::shared_ptr<const WoodModel> differenceModel;
-  bool differenceOfAppearance = false;  // against the photo-true cut, not the procedural wood
+  std::shared_ptr<const BoardWood> differenceBoard;  // log mode: the board's wood it was computed against
+  bool differenceOfAppearance = false;               // against the photo-true cut, not the procedural wood
 };
 
 class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
@@ -168,6 +169,8 @@ class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   // After every frame: its GPU time and resolution divisor.
   void frameRendered(double milliseconds, int renderScale);
   void cutSplitPositionChanged(double fraction);  // also while the line is dragged
+  // Log mode's wood was replaced (another board, log or knot edit; setBoardWood).
+  void boardWoodChanged();
   // The GLSL program could not be built (the message is also drawn in the view).
   void glError(const QString& message);
 

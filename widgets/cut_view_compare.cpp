@@ -51,7 +51,7 @@ bool CutView::showsCutPhoto() const {
 
 bool CutView::differenceUpToDate() const {
   return !cutPhoto_.difference.isNull() && cutPhoto_.differenceModel == model_ &&
-         cutPhoto_.differenceOfAppearance == showsCutAppearance();
+         cutPhoto_.differenceBoard == boardWood_ && cutPhoto_.differenceOfAppearance == showsCutAppearance();
 }
 
 QRectF CutView::cutRect() const {

@@ -20,6 +20,7 @@
 #include "io/image.hpp"
 #include "job_runner.hpp"
 #include "qt_image.hpp"
+#include "render/board_wood.hpp"
 #include "render/renderers.hpp"
 #include "util/error.hpp"
 
@@ -111,6 +112,7 @@ CutPhotoController::CutPhotoController(const EditorContext& context, CutView* cu
   // The model's side: a deferred call, so the cut panel has taken the new model or plane first.
   for (auto signal : {&Document::modelChanged, &Document::cutPlaneChanged, &Document::logChanged})
     connect(document_, signal, this, &CutPhotoController::modelSideChanged);
+  connect(cutView_, &CutView::boardWoodChanged, this, &CutPhotoController::modelSideChanged);
   updateActions();
 }
 
@@ -296,25 +298,27 @@ void CutPhotoController::modelSideChanged() {
 void CutPhotoController::startDifference() {
   const CutPhotoPicture& picture = cutView_->cutPhoto();
   if (cutView_->cutDisplay() != CutDisplay::Difference || picture.photo.image.isNull() ||
-      cutView_->cutPhotoStale() || cutView_->boardWood() || !cutView_->model() ||
-      cutView_->differenceUpToDate())
+      cutView_->cutPhotoStale() || !cutView_->model() || cutView_->differenceUpToDate())
     return;
   const int generation = ++differenceGeneration_;
   const std::shared_ptr<const WoodModel> model = cutView_->model();
-  const QImage appearance = cutView_->shownCutAppearance();
+  // Log mode: the board's wood (the picture the panel draws in GLSL, on the CPU), never photo-true.
+  const std::shared_ptr<const BoardWood> board = cutView_->boardWood();
+  const QImage appearance = board ? QImage() : cutView_->shownCutAppearance();
   const QImage photo = picture.photo.image;
   const CutPlaneSetting plane = picture.plane;
   const float pxPerMm = pxPerMm_;
   runInBackground(
       this,
-      [model, appearance, photo, plane, pxPerMm]() -> QVariant {
+      [model, board, appearance, photo, plane, pxPerMm]() -> QVariant {
         // The photo-true cut covers the same rectangle (cutGrid) at its own resolution; the heat map
-        // resamples it onto the photo's pixels.
-        const QImage wood =
-            appearance.isNull() ? toQImage(renderCut(*model, plane.plane(), pxPerMm)) : appearance;
+        // resamples it onto the photo's pixels. The board's cut has renderCut's layout.
+        const QImage wood = board                 ? toQImage(renderBoardCut(*board, plane.plane(), pxPerMm))
+                            : appearance.isNull() ? toQImage(renderCut(*model, plane.plane(), pxPerMm))
+                                                  : appearance;
         return differenceHeatMap(photo, wood);
       },
-      [this, generation, model, appearance](const QVariant& result) {
+      [this, generation, model, board, appearance](const QVariant& result) {
         if (generation != differenceGeneration_) return;
         if (isError(result)) {
           log("warning", tr("The cut photo could not be compared with the model: %1").arg(result.toString()));
@@ -323,6 +327,7 @@ void CutPhotoController::startDifference() {
         CutPhotoPicture picture = cutView_->cutPhoto();
         picture.difference = result.value<QImage>();
         picture.differenceModel = model;
+        picture.differenceBoard = board;
         picture.differenceOfAppearance = !appearance.isNull();
         cutView_->setCutPhoto(picture);
         emit differenceReady();

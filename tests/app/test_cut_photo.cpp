@@ -22,7 +22,9 @@
 #include "cut_view.hpp"
 #include "demo_window.hpp"
 #include "document.hpp"
+#include "log_board_controller.hpp"
 #include "qt_image.hpp"
+#include "render/board_wood.hpp"
 #include "render/renderers.hpp"
 #include "window_grab.hpp"
 
@@ -86,6 +88,7 @@ class TestCutPhoto : public QObject {
   void aMissingPhotoOnOpenNamesTheFile();
   void differenceFollowsThePhotoTrueCut();
   void showsWhereAnotherBoardDeparts();
+  void differenceOfABoardCutFromALog();
   void cleanupTestCase() { window_.reset(); }
 
  private:
@@ -366,3 +369,39 @@ void TestCutPhoto::showsWhereAnotherBoardDeparts() {
 
 QTEST_MAIN(TestCutPhoto)
 #include "test_cut_photo.moc"
+
+// Log mode: the cut panel shows a board cut from a log (its knot model in GLSL); Difference compares the
+// photo with that board's cut, rendered on the CPU (render/board_wood.hpp renderBoardCut), not with the
+// block model's. The board's own cut loaded as the photo: near black; tinted green: bright.
+void TestCutPhoto::differenceOfABoardCutFromALog() {
+  window_->logBoard()->openRandomLog(7);
+  QTRY_VERIFY_WITH_TIMEOUT(document()->log().has_value() && view()->boardWood(), kTimeoutMs);
+  document()->setCutEnabled(true);
+  document()->editCutPlane(kPlane, true);
+  view()->zoomToFit();
+  // The board's wood is made again in the background after the log lands (latest wins): settle first.
+  QTest::qWait(500);
+  QTRY_VERIFY_WITH_TIMEOUT(view()->boardWood(), kTimeoutMs);
+  const std::shared_ptr<const BoardWood> wood = view()->boardWood();
+  const glm::vec3 size = document()->project().block.size();
+  const float pxPerMm = std::min(3.0f, 900.0f / std::max({size.x, size.y, size.z}));
+  const QImage own =
+      toQImage(renderBoardCut(*wood, kPlane.plane(), pxPerMm)).convertToFormat(QImage::Format_RGB888);
+  QVERIFY(own.save(file("board_cut.png")));
+  QVERIFY(tinted(own).save(file("board_cut_green.png")));
+
+  QVERIFY(load(file("board_cut_green.png")));
+  controller()->setDisplay(CutDisplay::Difference);
+  waitForDifference();
+  QVERIFY(view()->cutPhoto().differenceBoard == view()->boardWood());
+  const double tintedShare = brightShare(view()->cutPhoto().difference, 32);
+  QVERIFY(load(file("board_cut.png")));
+  controller()->setDisplay(CutDisplay::Difference);
+  waitForDifference();
+  const double ownShare = brightShare(view()->cutPhoto().difference, 32);
+  qInfo("log mode, %.2f px/mm: heat map pixels brighter than 32: %.4f for the board's own cut, %.4f tinted",
+        pxPerMm, ownShare, tintedShare);
+  QVERIFY(ownShare < 0.02);
+  QVERIFY(tintedShare > 0.9);
+  QVERIFY(view()->grabFramebuffer().save(testing::artifact("cut_photo_difference_log")));
+}
