@@ -35,6 +35,9 @@ PatternSearchResult patternSearch(
     std::vector<double> bestOf(n, result.value);
     std::vector<double> moveOf(n, 0.0);
     std::vector<bool> improved(n, false);
+    std::vector<double> change(n, 0.0);  // the largest |trial - current| of each coordinate
+    for (std::size_t t = 0; t < trials.size(); ++t)
+      change[moves[t].first] = std::max(change[moves[t].first], std::abs(values[t] - result.value));
     std::size_t bestTrial = trials.size();
     double bestValue = result.value;
     for (std::size_t t = 0; t < trials.size(); ++t) {
@@ -48,6 +51,9 @@ PatternSearchResult patternSearch(
       if (improved[i]) {
         next[i] = moveOf[i];
         ++improvedCount;
+      } else if (options.flatTolerance > 0 && step[i] >= options.minStep &&
+                 change[i] <= options.flatTolerance * std::abs(result.value)) {
+        step[i] = 0;  // flat: settled
       } else {
         step[i] *= 0.5;
       }

@@ -17,6 +17,10 @@ struct PatternSearchOptions {
   double initialStep = 0.125;  // in unit coordinates
   double minStep = 1.0 / 64;   // a coordinate whose step fell below is settled
   int maxSweeps = 8;
+  // A coordinate is settled at once when neither of its trials moved the loss by more than this share of
+  // it (0: never): halving the step of a parameter the loss does not see (faint rays, a pore size at zero
+  // density) would only spend evaluations.
+  double flatTolerance = 0;
 };
 
 // Values of the objective at each point of a batch (the caller evaluates them in parallel).

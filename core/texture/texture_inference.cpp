@@ -178,6 +178,8 @@ TextureInferenceResult inferTexture(const Block& block, const WoodParameters& pa
   }
   result.colourSeconds = stage.seconds();
   result.params = current;
+  result.composedPoints = objective.shadingCounts().composed;
+  for (int g = 0; g < 5; ++g) result.layerPoints[g] = objective.shadingCounts().layers[g];
 
   // Per-face report, before and after.
   stage = Stopwatch();
@@ -228,6 +230,11 @@ std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResu
              r.coarseFactors[2], r.lossAfterSearch, r.sweeps, r.lossAfter, r.colourStep.c_str()));
   lines.push_back(format("time: coarse %.2f s, search %.2f s, colours %.2f s, report %.2f s; %d evaluations",
                          r.coarseSeconds, r.searchSeconds, r.colourSeconds, r.reportSeconds, r.evaluations));
+  lines.push_back(
+      format("shaded points (millions): composed %.2f; layers: rings %.2f, latewood %.2f, pores %.2f, "
+             "rays %.2f, fibres %.2f",
+             r.composedPoints * 1e-6, r.layerPoints[0] * 1e-6, r.layerPoints[1] * 1e-6,
+             r.layerPoints[2] * 1e-6, r.layerPoints[3] * 1e-6, r.layerPoints[4] * 1e-6));
   return lines;
 }
 

@@ -9,6 +9,7 @@
 
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"
+#include "texture/shading_layers.hpp"
 #include "util/parallel.hpp"
 
 namespace kerf {
@@ -160,17 +161,38 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
   std::vector<std::unique_ptr<WoodModel>> models;
   for (const WoodParameters& params : candidates)
     models.push_back(std::make_unique<WoodModel>(block_, params, rates_));
-  std::vector<char> located;
-  for (const auto& model : models) located.push_back(sameLocations(*model) ? 1 : 0);
+  // Candidates that put the crops' points where the start did share their layers (texture/
+  // shading_layers.hpp); the others are rendered from scratch.
+  std::vector<const WoodModel*> located;
+  std::vector<std::size_t> unlocated;
+  for (std::size_t c = 0; c < models.size(); ++c)
+    if (sameLocations(*models[c]))
+      located.push_back(models[c].get());
+    else
+      unlocated.push_back(c);
   const std::size_t crops = layout_.crops.size();
   std::vector<Image> rendered(candidates.size() * crops);
+  std::vector<Image> shared = renderCandidateCrops(
+      located, layout_.crops, cropLocations_, options_.samples, &counts_,
+      progress.part(0.0, 0.8 * located.size() / std::max<std::size_t>(1, models.size())));
+  for (std::size_t c = 0, i = 0, u = 0; c < models.size(); ++c) {
+    if (u < unlocated.size() && unlocated[u] == c) {
+      ++u;
+      continue;
+    }
+    for (std::size_t k = 0; k < crops; ++k) rendered[c * crops + k] = std::move(shared[i * crops + k]);
+    ++i;
+  }
   // One work item per (candidate, crop): enough of them to keep every thread busy.
   parallelRows(
-      static_cast<int>(rendered.size()),
+      static_cast<int>(unlocated.size() * crops),
       [&](int item) {
-        rendered[item] = renderCrop(*models[item / crops], located[item / crops] != 0, item % crops);
+        const std::size_t c = unlocated[item / crops], k = item % crops;
+        rendered[c * crops + k] = renderCrop(*models[c], false, k);
+        counts_.composed += static_cast<std::uint64_t>(layout_.crops[k].width) * layout_.crops[k].height *
+                            options_.samples * options_.samples;
       },
-      progress.part(0.0, 0.8));
+      progress.part(0.8 * located.size() / std::max<std::size_t>(1, models.size()), 0.8));
   std::vector<TextureScore> scores(candidates.size());
   parallelRows(
       static_cast<int>(candidates.size() * 6),

@@ -21,6 +21,7 @@
 #include "params/parameter_schema.hpp"
 #include "texture/face_crops.hpp"
 #include "texture/grain_view.hpp"
+#include "texture/shading_layers.hpp"
 #include "texture/texture_statistics.hpp"
 #include "util/progress.hpp"
 
@@ -99,6 +100,8 @@ class TextureObjective {
                                             const Progress& progress = {}) const;
 
   const FaceCropLayout& layout() const { return layout_; }
+  // Points shaded by evaluate() so far: composed, and computed per layer group (shading_layers.hpp).
+  const ShadingCounts& shadingCounts() const { return counts_; }
   const std::array<FaceOrientation, 6>& orientations() const { return orientations_; }
 
  private:
@@ -124,6 +127,7 @@ class TextureObjective {
   std::vector<glm::vec3> probes_;
   std::vector<WoodLocation> probeLocations_;
   bool sameLocations(const WoodModel& model) const;
+  mutable ShadingCounts counts_;
   Image renderCrop(const WoodModel& model, bool located, std::size_t k) const;
 };
 
