@@ -8,7 +8,7 @@ namespace kerf {
 PatternSearchResult patternSearch(
     std::vector<double> x0, double f0, const BatchObjective& objective, const PatternSearchOptions& options,
     const std::function<void(const std::vector<double>&, double)>& onImprovement, const Progress& progress) {
-  PatternSearchResult result{std::move(x0), f0, 0, 0};
+  PatternSearchResult result{std::move(x0), f0, 0, 0, {}, {}};
   const std::size_t n = result.x.size();
   std::vector<double> step(n, options.initialStep);
   for (int sweep = 0; sweep < options.maxSweeps; ++sweep) {
@@ -27,6 +27,12 @@ PatternSearchResult patternSearch(
       }
     }
     if (trials.empty()) break;
+    const int evaluationsBefore = result.evaluations;
+    const auto endSweep = [&] {
+      result.sweepValues.push_back(result.value);
+      result.sweepEvaluations.push_back(result.evaluations - evaluationsBefore);
+      progress.set(static_cast<double>(sweep + 1) / options.maxSweeps);
+    };
     const std::vector<double> values = objective(trials);
     result.evaluations += static_cast<int>(trials.size());
     result.sweeps = sweep + 1;
@@ -59,7 +65,7 @@ PatternSearchResult patternSearch(
       }
     }
     if (bestTrial == trials.size()) {
-      progress.set(static_cast<double>(sweep + 1) / options.maxSweeps);
+      endSweep();
       continue;
     }
     std::vector<double> chosen = trials[bestTrial];
@@ -72,7 +78,7 @@ PatternSearchResult patternSearch(
     result.x = chosen;
     result.value = chosenValue;
     if (onImprovement) onImprovement(result.x, result.value);
-    progress.set(static_cast<double>(sweep + 1) / options.maxSweeps);
+    endSweep();
   }
   return result;
 }

@@ -31,6 +31,8 @@ struct PatternSearchResult {
   double value = 0;
   int evaluations = 0;
   int sweeps = 0;
+  std::vector<double> sweepValues;    // the best value after each sweep
+  std::vector<int> sweepEvaluations;  // the evaluations of each sweep
 };
 
 // Starts at x0 (value f0, already known). onImprovement is called with every new best point.

@@ -15,18 +15,29 @@ enum Group { kRings, kLatewood, kPores, kRays, kFibres, kGroups };
 std::vector<float> keyOf(const WoodParameters& p, int group) {
   switch (group) {
     case kRings:
-      return {p.seed,          p.ringOffset,    p.ringProfile0, p.ringProfile1, p.ringProfile2,
-              p.ringProfile3,  p.ringProfile4,  p.ringProfile5, p.ringProfile6, p.ringProfile7,
-              p.mottleStrength > 0.0f ? 1.0f : 0.0f, p.mottleScale};
+      return {p.seed,
+              p.ringOffset,
+              p.ringProfile0,
+              p.ringProfile1,
+              p.ringProfile2,
+              p.ringProfile3,
+              p.ringProfile4,
+              p.ringProfile5,
+              p.ringProfile6,
+              p.ringProfile7,
+              p.mottleStrength > 0.0f ? 1.0f : 0.0f,
+              p.mottleScale};
     case kLatewood:
       return {p.ringOffset, p.latewoodFraction, p.transition, p.boundarySoftness};
     case kPores:
-      return {p.seed,           p.ringOffset,      p.latewoodFraction, p.transition,       p.boundarySoftness,
-              p.poreRadiusEarly, p.poreRadiusLate, p.poreDensityEarly, p.poreDensityLate, p.poreCellSize,
-              p.poreLength};
+      return {p.seed,           p.ringOffset,       p.latewoodFraction,
+              p.transition,     p.boundarySoftness, p.poreRadiusEarly,
+              p.poreRadiusLate, p.poreDensityEarly, p.poreDensityLate,
+              p.poreCellSize,   p.poreLength};
     case kRays:
-      return {p.seed,      p.rayOpacity > 0.0f ? 1.0f : 0.0f, p.rayDensity, p.rayLength, p.raySpacing,
-              p.rayHeight, p.rayWidth};
+      return {
+          p.seed,    p.rayOpacity > 0.0f ? 1.0f : 0.0f, p.rayDensity, p.rayLength, p.raySpacing, p.rayHeight,
+          p.rayWidth};
     default:
       return {p.seed, p.fiberStrength > 0.0f ? 1.0f : 0.0f, p.fiberWidth, p.fiberLength};
   }
@@ -116,8 +127,8 @@ std::vector<Image> renderCandidateCrops(const std::vector<const WoodModel*>& mod
           for (int x = 0; x < crop.width; ++x) {
             glm::vec3 sum(0.0f);
             for (int i = 0; i < samples * samples; ++i, ++p) {
-              const WoodLayers l{layer[kLatewood][p], layer[kPores][p],          layer[kRays][p],
-                                 layer[kFibres][p],   layer[kRings][3 * p],      layer[kRings][3 * p + 1],
+              const WoodLayers l{layer[kLatewood][p],     layer[kPores][p],     layer[kRays][p],
+                                 layer[kFibres][p],       layer[kRings][3 * p], layer[kRings][3 * p + 1],
                                  layer[kRings][3 * p + 2]};
               sum += material.compose(at[p], l, face).color;
             }

@@ -61,6 +61,8 @@ struct TextureInferenceResult {
   std::array<float, 3> coarseFactors{1, 1, 1};                                     // fibres, pores, rays
   std::string colourStep = "colours kept";  // "colours refitted", "face tints matched"
   int evaluations = 0, sweeps = 0, crops = 0;
+  std::vector<double> sweepLosses;    // the loss after each sweep of the search
+  std::vector<int> sweepEvaluations;  // and the evaluations of each
   // Points of the crops (shading_layers.hpp): composed into colours, and computed per layer group (rings,
   // latewood, pores, rays, fibres); load-independent measures of the search's cost.
   std::uint64_t composedPoints = 0;

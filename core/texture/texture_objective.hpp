@@ -93,6 +93,10 @@ class TextureObjective {
                                      const Progress& progress = {}) const;
   // The same loss on whole faces (for reports; slower).
   TextureScore evaluateFullFaces(const WoodParameters& params, const Progress& progress = {}) const;
+  // The same for several parameter sets at once: the faces' points located once and the layers that the
+  // sets agree on shaded once (texture/shading_layers.hpp); the scores as one by one, bit for bit.
+  std::vector<TextureScore> evaluateFullFaces(const std::vector<WoodParameters>& candidates,
+                                              const Progress& progress = {}) const;
 
   // Per face, the photo's mean colour over the crops divided by the rendering's (1 where a face has no
   // photo): the face tint correction that matches the mean colours without touching the texture.

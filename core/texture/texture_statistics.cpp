@@ -1,7 +1,10 @@
 #include "texture/texture_statistics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -70,35 +73,46 @@ void orientedResponses(const cv::Mat& grey, float sigma, int orientations, std::
   }
 }
 
-// Puts the values of the given ranks (sorted, distinct) in their sorted places: nth_element at the middle
-// rank, then the ranks below in the part below it and those above in the part above (a multi-select,
-// about n log(ranks) steps instead of n per rank).
-void selectRanks(std::vector<float>::iterator first, std::vector<float>::iterator last,
-                 std::vector<float>::iterator base, const std::size_t* rank, const std::size_t* rankEnd) {
-  if (rank == rankEnd || last - first <= 1) return;
-  const std::size_t* middle = rank + (rankEnd - rank) / 2;
-  const auto at = base + static_cast<std::ptrdiff_t>(*middle);
-  std::nth_element(first, at, last);
-  selectRanks(first, at, base, rank, middle);
-  selectRanks(at + 1, last, base, middle + 1, rankEnd);
+// Sorts floats (no NaN) by their bits: an LSD radix sort, 3 passes of 11 bits over keys that order as the
+// floats do (the sign bit flipped, negative values inverted). A quantile needs exact order statistics;
+// this gives all of them in about 6 n steps, where nth_element from rank to rank took 23 % of a texture
+// search and a multi-select of the 30 ranks 25 % (issue 16 item 6).
+void radixSort(std::vector<float>& values) {
+  const std::size_t n = values.size();
+  if (n < 512) {
+    std::sort(values.begin(), values.end());
+    return;
+  }
+  std::vector<std::uint32_t> keys(n), other(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t u;
+    std::memcpy(&u, &values[i], sizeof u);
+    keys[i] = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  }
+  for (const int shift : {0, 11, 22}) {
+    std::array<std::size_t, 2048> count{};
+    for (const std::uint32_t k : keys) ++count[(k >> shift) & 2047u];
+    std::size_t sum = 0;
+    for (std::size_t& c : count) {
+      const std::size_t here = c;
+      c = sum;
+      sum += here;
+    }
+    for (const std::uint32_t k : keys) other[count[(k >> shift) & 2047u]++] = k;
+    keys.swap(other);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t k = keys[i];
+    const std::uint32_t u = (k & 0x80000000u) ? (k & 0x7fffffffu) : ~k;
+    std::memcpy(&values[i], &u, sizeof u);
+  }
 }
 
-// The values at the `count` quantiles (interpolated between neighbours), as a full sort gives them. Only
-// the ranks needed are put in place (selectRanks): a full sort of every filter's responses was 13 % of a
-// texture search, and nth_element from rank to rank 23 % (issue 16 item 6).
+// The values at the `count` quantiles (interpolated between neighbours), as a full sort gives them.
 std::vector<double> quantilesOf(std::vector<float>& values, int count) {
   std::vector<double> q(count, 0.0);
   if (values.empty()) return q;
-  std::vector<std::size_t> ranks;
-  for (int k = 0; k < count; ++k) {
-    const double at = (k + 0.5) / count * (values.size() - 1);
-    const auto lo = static_cast<std::size_t>(at);
-    ranks.push_back(lo);
-    ranks.push_back(std::min(lo + 1, values.size() - 1));
-  }
-  std::sort(ranks.begin(), ranks.end());
-  ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
-  selectRanks(values.begin(), values.end(), values.begin(), ranks.data(), ranks.data() + ranks.size());
+  radixSort(values);
   for (int k = 0; k < count; ++k) {
     const double at = (k + 0.5) / count * (values.size() - 1);
     const auto lo = static_cast<std::size_t>(at);
