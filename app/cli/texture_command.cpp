@@ -86,7 +86,7 @@ Command addTextureCommand(CLI::App& app) {
         sweeps = defaults.search.maxSweeps, samples = defaults.loss.samples,
         ringPhases = defaults.loss.ringPhaseBins;
     double flatTolerance = defaults.search.flatTolerance;
-    bool noCoarse = false, keepColours = false, parabolic = defaults.search.parabolic;
+    bool noCoarse = false, keepColours = false;
   };
   auto o = std::make_shared<Options>();
   texture->fallthrough();  // kerf-cli's own --stats, --threads, -q may also follow the subcommand
@@ -128,9 +128,6 @@ Command addTextureCommand(CLI::App& app) {
           "procedural parameters are kept as they are")
       ->check(CLI::IsMember({"procedural", "photo"}));
   texture->add_flag("--no-coarse", o->noCoarse, "Skip the coarse size grid");
-  texture->add_flag(
-      "--parabolic,!--no-parabolic", o->parabolic,
-      "Each sweep also tries every parameter at the minimum of the parabola through its trials");
   texture->add_flag("--keep-colours", o->keepColours, "Do not refit the colours after the detail");
   texture->add_option("--compare", o->compare,
                       "Also write an image: photos (top), faces before (middle) and after (bottom), A..F");
@@ -160,7 +157,6 @@ Command addTextureCommand(CLI::App& app) {
         options.loss.samples = o->samples;
         options.search.maxSweeps = o->sweeps;
         options.search.flatTolerance = o->flatTolerance;
-        options.search.parabolic = o->parabolic;
         options.coarseSearch = !o->noCoarse;
         options.refitColours = !o->keepColours;
         if (!o->parameters.empty()) {

@@ -64,52 +64,16 @@ PatternSearchResult patternSearch(
         step[i] *= 0.5;
       }
     }
-    // The parabolic point: each coordinate at its parabola's minimum through (x - a, f-), (x, f), (x + b,
-    // f+).
-    std::vector<double> vertex = result.x;
-    bool hasVertex = false;
-    if (options.parabolic) {
-      std::vector<double> below(n, -1), above(n, -1), fBelow(n, 0), fAbove(n, 0);
-      for (std::size_t t = 0; t < trials.size(); ++t) {
-        const auto [i, v] = moves[t];
-        if (v < result.x[i])
-          below[i] = result.x[i] - v, fBelow[i] = values[t];
-        else
-          above[i] = v - result.x[i], fAbove[i] = values[t];
-      }
-      for (std::size_t i = 0; i < n; ++i) {
-        if (below[i] <= 0 || above[i] <= 0) continue;
-        const double a = below[i], b = above[i], f0 = result.value;
-        const double slopeUp = (fAbove[i] - f0) / b, slopeDown = (f0 - fBelow[i]) / a;
-        const double curvature = (slopeUp - slopeDown) / (0.5 * (a + b));
-        if (!(curvature > 0)) continue;
-        // f(x + d) ~ f0 + g d + curvature d^2 / 2, g the slope at x.
-        const double g = (slopeUp * a + slopeDown * b) / (a + b);
-        const double d = std::clamp(-g / curvature, -2.0 * a, 2.0 * b);
-        vertex[i] = std::clamp(result.x[i] + d, 0.0, 1.0);
-        hasVertex = hasVertex || std::abs(vertex[i] - result.x[i]) > 1e-12;
-      }
-    }
-    if (bestTrial == trials.size() && !hasVertex) {
+    if (bestTrial == trials.size()) {
       endSweep();
       continue;
     }
-    std::vector<double> chosen = bestTrial < trials.size() ? trials[bestTrial] : result.x;
+    std::vector<double> chosen = trials[bestTrial];
     double chosenValue = bestValue;
-    // All improving moves at once (usually better, as the features interact weakly), and the parabolic
-    // point: evaluated together.
-    std::vector<std::vector<double>> extra;
-    if (improvedCount > 1) extra.push_back(next);
-    if (hasVertex && vertex != next && vertex != chosen) extra.push_back(vertex);
-    if (!extra.empty()) {
-      const std::vector<double> extraValues = objective(extra);
-      result.evaluations += static_cast<int>(extra.size());
-      for (std::size_t e = 0; e < extra.size(); ++e)
-        if (extraValues[e] < chosenValue) chosen = extra[e], chosenValue = extraValues[e];
-    }
-    if (chosenValue >= result.value) {
-      endSweep();
-      continue;
+    if (improvedCount > 1) {  // all improving moves at once: usually better, as the features interact weakly
+      const double combined = objective({next})[0];
+      ++result.evaluations;
+      if (combined < chosenValue) chosen = next, chosenValue = combined;
     }
     result.x = chosen;
     result.value = chosenValue;
