@@ -121,7 +121,8 @@ Command addTextureCommand(CLI::App& app) {
   texture
       ->add_option(
           "--appearance", o->appearance,
-          "procedural (default): infer the procedural model's detail from the photos (minutes). photo: "
+          "procedural (default): infer the procedural model's detail from the photos (tens of seconds). "
+          "photo: "
           "make every surface of the project's own photos, re-grown along the fitted field (issue 17, "
           "docs/texture.md); stored in the project, used by render-faces, render-cut and export (colour "
           "volumes too); the "
