@@ -9,7 +9,8 @@
 #
 #   bash scripts/species-round-trips.sh [--out DIR] [SPECIES ...]    # default: six kinds of wood
 #
-# Needs a built kerf-cli (build/test/app/kerf-cli, or KERF_CLI=path).
+# Needs a built kerf-cli (build/test/app/kerf-cli, or KERF_CLI=path). KERF_TEXTURE_ARGS="--sweeps 8 ..." passes
+# options to `kerf-cli texture` (e.g. to compare searches).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cli="${KERF_CLI:-$root/build/test/app/kerf-cli}"
@@ -49,7 +50,9 @@ json.dump(start, open(folder + "/start.kerf", "w"), indent=1)
 EOF
   "$cli" -q render-faces "$dir/truth.kerf" --out "$dir/photos" --px-per-mm 6.4 --samples 2 > /dev/null
   for f in A B C D E F; do cp "$dir/photos/$f.png" "$dir/photos/${f}_col.png"; done
-  "$cli" --stats texture "$dir/start.kerf" --photos "$dir/photos" --out "$dir/found.kerf" > "$dir/texture.log" 2>&1
+  # shellcheck disable=SC2086  # KERF_TEXTURE_ARGS: extra options of `kerf-cli texture`, word by word
+  "$cli" --stats texture "$dir/start.kerf" --photos "$dir/photos" --out "$dir/found.kerf" ${KERF_TEXTURE_ARGS:-} \
+    > "$dir/texture.log" 2>&1
   "$cli" -q render-faces "$dir/start.kerf" --out "$dir/start-faces" --px-per-mm 6.4 --samples 2 > /dev/null
   "$cli" -q render-faces "$dir/found.kerf" --out "$dir/found-faces" --px-per-mm 6.4 --samples 2 > /dev/null
   echo "== $id ($(grep -o 'time: .*' "$dir/texture.log"))"

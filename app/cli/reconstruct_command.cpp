@@ -37,8 +37,8 @@ Command addReconstructCommand(CLI::App& app) {
   reconstruct->add_flag(
       "--texture", o->texture,
       "Also infer the pores, rays, fibres and colours from the photos (kerf-cli texture with "
-      "its defaults). Off by default: it takes minutes (CN03: about 4 on two cores) where the "
-      "rings and the fit take seconds");
+      "its defaults). Off by default: it takes tens of seconds (CN03: about 12 s on two idle cores) "
+      "on top of the rings and the fit");
   reconstruct
       ->add_option(
           "--appearance", o->appearance,
@@ -60,7 +60,8 @@ Command addReconstructCommand(CLI::App& app) {
                 ? (std::to_string(fitted.facesDetected) + " faces' rings detected from the photos").c_str()
                 : "the sample's own ring images and traces");
         if (o->texture) {
-          std::printf("[2/2] texture detail from the photos (pores, rays, fibres, colours; minutes)\n");
+          std::printf(
+              "[2/2] texture detail from the photos (pores, rays, fibres, colours; tens of seconds)\n");
           std::fflush(stdout);
           const Stopwatch textureClock;
           const TextureInferenceOptions defaults;  // as kerf-cli texture without options
@@ -68,7 +69,7 @@ Command addReconstructCommand(CLI::App& app) {
           std::printf("[2/2] done in %.1f s\n", textureClock.seconds());
         } else if (o->appearance != "photo") {
           std::printf(
-              "[2/2] texture detail skipped (it takes minutes): add --texture, or run kerf-cli "
+              "[2/2] texture detail skipped (it takes tens of seconds): add --texture, or run kerf-cli "
               "texture %s --out %s later\n",
               o->out.c_str(), o->out.c_str());
         }

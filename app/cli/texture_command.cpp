@@ -85,6 +85,7 @@ Command addTextureCommand(CLI::App& app) {
     int crops = defaults.loss.cropsPerFace, cropSize = defaults.loss.cropSize,
         sweeps = defaults.search.maxSweeps, samples = defaults.loss.samples,
         ringPhases = defaults.loss.ringPhaseBins;
+    double flatTolerance = defaults.search.flatTolerance;
     bool noCoarse = false, keepColours = false;
   };
   auto o = std::make_shared<Options>();
@@ -105,6 +106,11 @@ Command addTextureCommand(CLI::App& app) {
   cli::addNumber(
       texture, "--sweeps", o->sweeps,
       "Coordinate-search sweeps (default " + std::to_string(o->sweeps) + "; 0 = coarse search only)", 0, 100);
+  cli::addNumber(texture, "--flat-tolerance", o->flatTolerance,
+                 "Settle a parameter whose two trials moved the loss by no more than this share of it "
+                 "(default " +
+                     std::to_string(o->flatTolerance) + "; 0: never, the step halves instead)",
+                 0.0, 1.0);
   cli::addNumber(texture, "--samples", o->samples,
                  "Points per pixel side when rendering (default " + std::to_string(o->samples) + ")", 1, 4);
   texture->add_option("--params", o->parameters,
@@ -115,7 +121,8 @@ Command addTextureCommand(CLI::App& app) {
   texture
       ->add_option(
           "--appearance", o->appearance,
-          "procedural (default): infer the procedural model's detail from the photos (minutes). photo: "
+          "procedural (default): infer the procedural model's detail from the photos (tens of seconds). "
+          "photo: "
           "make every surface of the project's own photos, re-grown along the fitted field (issue 17, "
           "docs/texture.md); stored in the project, used by render-faces, render-cut and export (colour "
           "volumes too); the "
@@ -150,6 +157,7 @@ Command addTextureCommand(CLI::App& app) {
         options.loss.cropSize = o->cropSize;
         options.loss.samples = o->samples;
         options.search.maxSweeps = o->sweeps;
+        options.search.flatTolerance = o->flatTolerance;
         options.coarseSearch = !o->noCoarse;
         options.refitColours = !o->keepColours;
         if (!o->parameters.empty()) {

@@ -21,6 +21,8 @@ namespace kerf {
 using WoodSample = glsl::WoodKernels::WoodSample;
 // Where a point lies in the tree (growth time, knot, undistorted frame): see kernels/wood.glsl.
 using WoodLocation = glsl::WoodKernels::WoodLocation;
+// The parts of shade() that groups of texture parameters set on their own: see kernels/wood.glsl.
+using WoodLayers = glsl::WoodKernels::WoodLayers;
 
 class WoodMaterial {
  public:
@@ -40,6 +42,22 @@ class WoodMaterial {
   }
   WoodSample shade(const WoodLocation& location, int faceIndex = -1) const {
     return kernels_.shadeWood(location, faceIndex);
+  }
+  // shade() in two steps (the texture search reuses a layer across candidates that agree on its
+  // parameters): shade(l, f) == compose(l, layers(l), f), bit for bit.
+  WoodLayers layers(const WoodLocation& location) const { return kernels_.woodLayers(location); }
+  WoodSample compose(const WoodLocation& location, const WoodLayers& layers, int faceIndex = -1) const {
+    return kernels_.composeWood(location, layers, faceIndex);
+  }
+  // The layers one at a time (what layers() puts in each member).
+  float latewoodLayer(const WoodLocation& w) const { return kernels_.seasonOf(w.year); }
+  float poreLayer(const WoodLocation& w) const { return kernels_.poreWeight(w.c, kernels_.seasonOf(w.year)); }
+  float rayLayer(const WoodLocation& w) const { return kernels_.rayWeight(w.c); }
+  float fiberLayer(const WoodLocation& w) const { return kernels_.fiberLayer(w.c); }
+  void ringLayers(const WoodLocation& w, WoodLayers& l) const {
+    l.ringProfile = kernels_.ringProfileAt(w.year);
+    l.ringNoise = kernels_.ringNoiseAt(w.year);
+    l.mottle = kernels_.mottleAt(w.c);
   }
   // Only the growth time at the (distorted) point: WoodSample::year without the texture's cost.
   float year(glm::vec3 pMm) const { return kernels_.woodYear(pMm); }

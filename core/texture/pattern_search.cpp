@@ -8,7 +8,7 @@ namespace kerf {
 PatternSearchResult patternSearch(
     std::vector<double> x0, double f0, const BatchObjective& objective, const PatternSearchOptions& options,
     const std::function<void(const std::vector<double>&, double)>& onImprovement, const Progress& progress) {
-  PatternSearchResult result{std::move(x0), f0, 0, 0};
+  PatternSearchResult result{std::move(x0), f0, 0, 0, {}, {}};
   const std::size_t n = result.x.size();
   std::vector<double> step(n, options.initialStep);
   for (int sweep = 0; sweep < options.maxSweeps; ++sweep) {
@@ -27,6 +27,12 @@ PatternSearchResult patternSearch(
       }
     }
     if (trials.empty()) break;
+    const int evaluationsBefore = result.evaluations;
+    const auto endSweep = [&] {
+      result.sweepValues.push_back(result.value);
+      result.sweepEvaluations.push_back(result.evaluations - evaluationsBefore);
+      progress.set(static_cast<double>(sweep + 1) / options.maxSweeps);
+    };
     const std::vector<double> values = objective(trials);
     result.evaluations += static_cast<int>(trials.size());
     result.sweeps = sweep + 1;
@@ -35,6 +41,9 @@ PatternSearchResult patternSearch(
     std::vector<double> bestOf(n, result.value);
     std::vector<double> moveOf(n, 0.0);
     std::vector<bool> improved(n, false);
+    std::vector<double> change(n, 0.0);  // the largest |trial - current| of each coordinate
+    for (std::size_t t = 0; t < trials.size(); ++t)
+      change[moves[t].first] = std::max(change[moves[t].first], std::abs(values[t] - result.value));
     std::size_t bestTrial = trials.size();
     double bestValue = result.value;
     for (std::size_t t = 0; t < trials.size(); ++t) {
@@ -48,12 +57,15 @@ PatternSearchResult patternSearch(
       if (improved[i]) {
         next[i] = moveOf[i];
         ++improvedCount;
+      } else if (options.flatTolerance > 0 && step[i] >= options.minStep &&
+                 change[i] <= options.flatTolerance * std::abs(result.value)) {
+        step[i] = 0;  // flat: settled
       } else {
         step[i] *= 0.5;
       }
     }
     if (bestTrial == trials.size()) {
-      progress.set(static_cast<double>(sweep + 1) / options.maxSweeps);
+      endSweep();
       continue;
     }
     std::vector<double> chosen = trials[bestTrial];
@@ -66,7 +78,7 @@ PatternSearchResult patternSearch(
     result.x = chosen;
     result.value = chosenValue;
     if (onImprovement) onImprovement(result.x, result.value);
-    progress.set(static_cast<double>(sweep + 1) / options.maxSweeps);
+    endSweep();
   }
   return result;
 }

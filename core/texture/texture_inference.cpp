@@ -135,6 +135,8 @@ TextureInferenceResult inferTexture(const Block& block, const WoodParameters& pa
       progress.part(0.2, 0.85));
   result.evaluations += search.evaluations;
   result.sweeps = search.sweeps;
+  result.sweepLosses = search.sweepValues;
+  result.sweepEvaluations = search.sweepEvaluations;
   result.lossAfterSearch = result.lossAfterCoarse;
   if (search.value < result.lossAfterCoarse) {
     current = decodeDetail(base, coordinates, search.x);
@@ -178,14 +180,17 @@ TextureInferenceResult inferTexture(const Block& block, const WoodParameters& pa
   }
   result.colourSeconds = stage.seconds();
   result.params = current;
+  result.composedPoints = objective.shadingCounts().composed;
+  for (int g = 0; g < 5; ++g) result.layerPoints[g] = objective.shadingCounts().layers[g];
 
   // Per-face report, before and after.
   stage = Stopwatch();
   result.fullFaces = options.fullFaceReport;
   TextureScore before, after;
   if (options.fullFaceReport) {
-    before = objective.evaluateFullFaces(params, progress.part(0.9, 0.95));
-    after = objective.evaluateFullFaces(current, progress.part(0.95, 1.0));
+    const std::vector<TextureScore> scores =
+        objective.evaluateFullFaces({params, current}, progress.part(0.9, 1.0));
+    before = scores[0], after = scores[1];
   } else {
     const std::vector<TextureScore> scores = objective.evaluate({params, current}, progress.part(0.9, 1.0));
     before = scores[0], after = scores[1];
@@ -228,6 +233,15 @@ std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResu
              r.coarseFactors[2], r.lossAfterSearch, r.sweeps, r.lossAfter, r.colourStep.c_str()));
   lines.push_back(format("time: coarse %.2f s, search %.2f s, colours %.2f s, report %.2f s; %d evaluations",
                          r.coarseSeconds, r.searchSeconds, r.colourSeconds, r.reportSeconds, r.evaluations));
+  std::string sweeps = "search, loss (evaluations) after each sweep:";
+  for (std::size_t i = 0; i < r.sweepLosses.size(); ++i)
+    sweeps += format(" %.4f (%d)", r.sweepLosses[i], r.sweepEvaluations[i]);
+  lines.push_back(sweeps);
+  lines.push_back(
+      format("shaded points (millions): composed %.2f; layers: rings %.2f, latewood %.2f, pores %.2f, "
+             "rays %.2f, fibres %.2f",
+             r.composedPoints * 1e-6, r.layerPoints[0] * 1e-6, r.layerPoints[1] * 1e-6,
+             r.layerPoints[2] * 1e-6, r.layerPoints[3] * 1e-6, r.layerPoints[4] * 1e-6));
   return lines;
 }
 

@@ -14,6 +14,7 @@
 // the contrast a woodworker sees (texture/grain_view.hpp), style statistics of a fixed filter bank and a
 // weak L1 colour term. Deterministic for a seed (crop placement), cancellable.
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -60,6 +61,12 @@ struct TextureInferenceResult {
   std::array<float, 3> coarseFactors{1, 1, 1};                                     // fibres, pores, rays
   std::string colourStep = "colours kept";  // "colours refitted", "face tints matched"
   int evaluations = 0, sweeps = 0, crops = 0;
+  std::vector<double> sweepLosses;    // the loss after each sweep of the search
+  std::vector<int> sweepEvaluations;  // and the evaluations of each
+  // Points of the crops (shading_layers.hpp): composed into colours, and computed per layer group (rings,
+  // latewood, pores, rays, fibres); load-independent measures of the search's cost.
+  std::uint64_t composedPoints = 0;
+  std::array<std::uint64_t, 5> layerPoints{};
   double coarseSeconds = 0, searchSeconds = 0, colourSeconds = 0, reportSeconds = 0, seconds = 0;
 };
 

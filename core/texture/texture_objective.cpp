@@ -9,6 +9,7 @@
 
 #include "render/renderers.hpp"
 #include "render/wood_model.hpp"
+#include "texture/shading_layers.hpp"
 #include "util/parallel.hpp"
 
 namespace kerf {
@@ -160,17 +161,38 @@ std::vector<TextureScore> TextureObjective::evaluate(const std::vector<WoodParam
   std::vector<std::unique_ptr<WoodModel>> models;
   for (const WoodParameters& params : candidates)
     models.push_back(std::make_unique<WoodModel>(block_, params, rates_));
-  std::vector<char> located;
-  for (const auto& model : models) located.push_back(sameLocations(*model) ? 1 : 0);
+  // Candidates that put the crops' points where the start did share their layers (texture/
+  // shading_layers.hpp); the others are rendered from scratch.
+  std::vector<const WoodModel*> located;
+  std::vector<std::size_t> unlocated;
+  for (std::size_t c = 0; c < models.size(); ++c)
+    if (sameLocations(*models[c]))
+      located.push_back(models[c].get());
+    else
+      unlocated.push_back(c);
   const std::size_t crops = layout_.crops.size();
   std::vector<Image> rendered(candidates.size() * crops);
+  std::vector<Image> shared = renderCandidateCrops(
+      located, layout_.crops, cropLocations_, options_.samples, &counts_,
+      progress.part(0.0, 0.8 * located.size() / std::max<std::size_t>(1, models.size())));
+  for (std::size_t c = 0, i = 0, u = 0; c < models.size(); ++c) {
+    if (u < unlocated.size() && unlocated[u] == c) {
+      ++u;
+      continue;
+    }
+    for (std::size_t k = 0; k < crops; ++k) rendered[c * crops + k] = std::move(shared[i * crops + k]);
+    ++i;
+  }
   // One work item per (candidate, crop): enough of them to keep every thread busy.
   parallelRows(
-      static_cast<int>(rendered.size()),
+      static_cast<int>(unlocated.size() * crops),
       [&](int item) {
-        rendered[item] = renderCrop(*models[item / crops], located[item / crops] != 0, item % crops);
+        const std::size_t c = unlocated[item / crops], k = item % crops;
+        rendered[c * crops + k] = renderCrop(*models[c], false, k);
+        counts_.composed += static_cast<std::uint64_t>(layout_.crops[k].width) * layout_.crops[k].height *
+                            options_.samples * options_.samples;
       },
-      progress.part(0.0, 0.8));
+      progress.part(0.8 * located.size() / std::max<std::size_t>(1, models.size()), 0.8));
   std::vector<TextureScore> scores(candidates.size());
   parallelRows(
       static_cast<int>(candidates.size() * 6),
@@ -236,44 +258,92 @@ std::array<glm::vec3, 6> TextureObjective::meanColourRatios(const WoodParameters
 
 TextureScore TextureObjective::evaluateFullFaces(const WoodParameters& params,
                                                  const Progress& progress) const {
-  const WoodModel model(block_, params, rates_);
+  return evaluateFullFaces(std::vector<WoodParameters>{params}, progress)[0];
+}
+
+std::vector<TextureScore> TextureObjective::evaluateFullFaces(const std::vector<WoodParameters>& candidates,
+                                                              const Progress& progress) const {
   const WoodModel start(block_, startParams_, rates_);  // the ring phases, as for the crops
-  TextureScore score;
+  std::vector<std::unique_ptr<WoodModel>> models;
+  std::vector<const WoodModel*> located;  // their faces share locations and layers (shading_layers.hpp)
+  std::vector<std::size_t> locatedIndex, unlocated;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    models.push_back(std::make_unique<WoodModel>(block_, candidates[c], rates_));
+    if (sameLocations(*models.back()))
+      located.push_back(models.back().get()), locatedIndex.push_back(c);
+    else
+      unlocated.push_back(c);
+  }
+  constexpr int kStripRows = 8;  // a face is rendered in strips: work items for every thread
+  std::vector<TextureScore> scores(candidates.size());
   for (FaceId face : kAllFaces) {
     const int i = faceIndex(face);
     if (cropsOfFace_[i].empty()) continue;
+    const Progress part = progress.part(i / 6.0, (i + 1) / 6.0);
     const Image& photo = photos_[i];
-    const Image image = renderFace(model, face, layout_.imageSize[i], options_.samples,
-                                   progress.part(i / 6.0, (i + 1) / 6.0));
+    const glm::ivec2 size = layout_.imageSize[i];
+    std::vector<Image> images(candidates.size());
+    if (!located.empty()) {
+      std::vector<FaceCrop> strips;
+      for (int y = 0; y < size.y; y += kStripRows)
+        strips.push_back(FaceCrop{face, 0, y, size.x, std::min(kStripRows, size.y - y)});
+      std::vector<std::vector<WoodLocation>> where(strips.size());
+      parallelRows(
+          static_cast<int>(strips.size()),
+          [&](int k) { where[k] = locateFaceCrop(start, strips[k], size, options_.samples); },
+          part.part(0.0, 0.3));
+      const std::vector<Image> rendered =
+          renderCandidateCrops(located, strips, where, options_.samples, nullptr, part.part(0.3, 0.7));
+      for (std::size_t j = 0; j < located.size(); ++j) {
+        Image image(size.x, size.y, 3);
+        for (std::size_t k = 0; k < strips.size(); ++k) {
+          const std::vector<float>& rows = rendered[j * strips.size() + k].pixels;
+          std::copy(rows.begin(), rows.end(), image.pixel(0, strips[k].y));
+        }
+        images[locatedIndex[j]] = std::move(image);
+      }
+    }
+    for (std::size_t c : unlocated) images[c] = renderFace(*models[c], face, size, options_.samples);
     std::vector<std::vector<std::uint8_t>> labels;
     if (options_.ringPhaseBins > 0)
-      labels.push_back(ringPhaseLabels(start, FaceCrop{face, 0, 0, image.width, image.height},
-                                       layout_.imageSize[i], options_.ringPhaseBins));
+      labels.push_back(
+          ringPhaseLabels(start, FaceCrop{face, 0, 0, size.x, size.y}, size, options_.ringPhaseBins));
     const auto statsOf = [&](const Image& im) {
       return computeLabelledTextureStatistics(std::span<const Image>(&im, 1), labels, options_.ringPhaseBins,
                                               layout_.pxPerMm[i], options_.statistics);
     };
-    const GrainView view = grainViewOf(image, layout_.pxPerMm[i]);
+    const std::vector<TextureStatistics> photoStats = statsOf(photo);
     const GrainView photoView = grainViewOf(photo, layout_.pxPerMm[i]);
-    double band = 0;
+    std::vector<std::uint8_t> bandLabels;
+    RingBandProfile photoBand;
     if (options_.bandBins > 0) {
-      const std::vector<std::uint8_t> bandLabels = ringPhaseLabels(
-          start, FaceCrop{face, 0, 0, image.width, image.height}, layout_.imageSize[i], options_.bandBins);
-      band = ringBandDifference(ringBandProfile(image, bandLabels, options_.bandBins, layout_.pxPerMm[i]),
-                                ringBandProfile(photo, bandLabels, options_.bandBins, layout_.pxPerMm[i]));
+      bandLabels = ringPhaseLabels(start, FaceCrop{face, 0, 0, size.x, size.y}, size, options_.bandBins);
+      photoBand = ringBandProfile(photo, bandLabels, options_.bandBins, layout_.pxPerMm[i]);
     }
-    score.faces[i] = {true,
-                      faceStyle(statsOf(image), statsOf(photo)),
-                      meanAbsoluteDifference(image, photo),
-                      blurredMeanAbsoluteDifference(image, photo, layout_.pxPerMm[i]),
-                      grainAgreement(view, photoView),
-                      contrastRatio(view, photoView),
-                      figureCorrelation(view, photoView),
-                      streakDifference(view, photoView),
-                      band};
+    parallelRows(
+        static_cast<int>(candidates.size()),
+        [&](int c) {
+          const Image& image = images[c];
+          const GrainView view = grainViewOf(image, layout_.pxPerMm[i]);
+          const double band =
+              options_.bandBins > 0
+                  ? ringBandDifference(
+                        ringBandProfile(image, bandLabels, options_.bandBins, layout_.pxPerMm[i]), photoBand)
+                  : 0.0;
+          scores[c].faces[i] = {true,
+                                faceStyle(statsOf(image), photoStats),
+                                meanAbsoluteDifference(image, photo),
+                                blurredMeanAbsoluteDifference(image, photo, layout_.pxPerMm[i]),
+                                grainAgreement(view, photoView),
+                                contrastRatio(view, photoView),
+                                figureCorrelation(view, photoView),
+                                streakDifference(view, photoView),
+                                band};
+        },
+        part.part(0.7, 1.0));
   }
-  score.loss = combine(score.faces);
-  return score;
+  for (TextureScore& score : scores) score.loss = combine(score.faces);
+  return scores;
 }
 
 }  // namespace kerf

@@ -21,6 +21,7 @@
 #include "params/parameter_schema.hpp"
 #include "texture/face_crops.hpp"
 #include "texture/grain_view.hpp"
+#include "texture/shading_layers.hpp"
 #include "texture/texture_statistics.hpp"
 #include "util/progress.hpp"
 
@@ -92,6 +93,10 @@ class TextureObjective {
                                      const Progress& progress = {}) const;
   // The same loss on whole faces (for reports; slower).
   TextureScore evaluateFullFaces(const WoodParameters& params, const Progress& progress = {}) const;
+  // The same for several parameter sets at once: the faces' points located once and the layers that the
+  // sets agree on shaded once (texture/shading_layers.hpp); the scores as one by one, bit for bit.
+  std::vector<TextureScore> evaluateFullFaces(const std::vector<WoodParameters>& candidates,
+                                              const Progress& progress = {}) const;
 
   // Per face, the photo's mean colour over the crops divided by the rendering's (1 where a face has no
   // photo): the face tint correction that matches the mean colours without touching the texture.
@@ -99,6 +104,8 @@ class TextureObjective {
                                             const Progress& progress = {}) const;
 
   const FaceCropLayout& layout() const { return layout_; }
+  // Points shaded by evaluate() so far: composed, and computed per layer group (shading_layers.hpp).
+  const ShadingCounts& shadingCounts() const { return counts_; }
   const std::array<FaceOrientation, 6>& orientations() const { return orientations_; }
 
  private:
@@ -124,6 +131,7 @@ class TextureObjective {
   std::vector<glm::vec3> probes_;
   std::vector<WoodLocation> probeLocations_;
   bool sameLocations(const WoodModel& model) const;
+  mutable ShadingCounts counts_;
   Image renderCrop(const WoodModel& model, bool located, std::size_t k) const;
 };
 

@@ -1,7 +1,10 @@
 #include "texture/texture_statistics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -70,29 +73,52 @@ void orientedResponses(const cv::Mat& grey, float sigma, int orientations, std::
   }
 }
 
-// The values at the `count` quantiles (interpolated between neighbours), as a full sort gives them. Only
-// the ranks needed are put in place (nth_element from rank to rank): a full sort of every filter's
-// responses was 13 % of a texture search.
+// Sorts floats (no NaN) by their bits: an LSD radix sort, 3 passes of 11 bits over keys that order as the
+// floats do (the sign bit flipped, negative values inverted). A quantile needs exact order statistics;
+// this gives all of them in about 6 n steps, where nth_element from rank to rank took 23 % of a texture
+// search and a multi-select of the 30 ranks 25 % (issue 16 item 6).
+void radixSort(std::vector<float>& values) {
+  const std::size_t n = values.size();
+  if (n < 512) {
+    std::sort(values.begin(), values.end());
+    return;
+  }
+  std::vector<std::uint32_t> keys(n), other(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t u;
+    std::memcpy(&u, &values[i], sizeof u);
+    keys[i] = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  }
+  for (const int shift : {0, 11, 22}) {
+    std::array<std::size_t, 2048> count{};
+    for (const std::uint32_t k : keys) ++count[(k >> shift) & 2047u];
+    std::size_t sum = 0;
+    for (std::size_t& c : count) {
+      const std::size_t here = c;
+      c = sum;
+      sum += here;
+    }
+    for (const std::uint32_t k : keys) other[count[(k >> shift) & 2047u]++] = k;
+    keys.swap(other);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t k = keys[i];
+    const std::uint32_t u = (k & 0x80000000u) ? (k & 0x7fffffffu) : ~k;
+    std::memcpy(&values[i], &u, sizeof u);
+  }
+}
+
+// The values at the `count` quantiles (interpolated between neighbours), as a full sort gives them.
 std::vector<double> quantilesOf(std::vector<float>& values, int count) {
   std::vector<double> q(count, 0.0);
   if (values.empty()) return q;
-  // Ranks are asked for in non-decreasing order: each one asked so far is in its sorted place, and nothing
-  // before `placed` is greater than anything after it.
-  auto placed = values.begin();
-  const auto valueAt = [&](std::size_t rank) {
-    const auto at = values.begin() + static_cast<std::ptrdiff_t>(rank);
-    if (at >= placed) {
-      std::nth_element(placed, at, values.end());
-      placed = at + 1;
-    }
-    return double(*at);
-  };
+  radixSort(values);
   for (int k = 0; k < count; ++k) {
     const double at = (k + 0.5) / count * (values.size() - 1);
     const auto lo = static_cast<std::size_t>(at);
     const std::size_t hi = std::min(lo + 1, values.size() - 1);
-    const double low = valueAt(lo);
-    q[k] = low + (at - lo) * (valueAt(hi) - low);
+    const double low = values[lo];
+    q[k] = low + (at - lo) * (double(values[hi]) - low);
   }
   return q;
 }

@@ -76,11 +76,15 @@ vec3 poreShadeOf(float pore) { return shadeOf(kPoreShadow * P.poreDarkness * por
 // in [-1, 1], so the streaks leave the mean colour as it was. The noise's lattice planes across the
 // fibres are staggered by a smooth offset, else every streak would end at the same heights and long grain
 // would show rows across it every fibres.length.
-vec3 fiberShadeAt(Cylindrical c) {
-  if (P.fiberStrength <= 0.0f) return vec3(1.0f);
+// In two steps: the noise (fibers.width and fibers.length) and its shade (fibers.strength).
+float fiberNoiseAt(Cylindrical c) {
   vec3 q = vec3(c.x / P.fiberWidth, c.y / P.fiberWidth, c.height / P.fiberLength);
   q.z += 2.0f * valueNoise3(vec3(0.5f * q.x, 0.5f * q.y, 0.0f), u_hashSeed + kFiberStagger).x;
-  return shadeOf(kFiberShade * P.fiberStrength * valueNoise3(q, u_hashSeed + kFiber).x);
+  return valueNoise3(q, u_hashSeed + kFiber).x;
+}
+vec3 fiberShadeOf(float noise) {
+  if (P.fiberStrength <= 0.0f) return vec3(1.0f);
+  return shadeOf(kFiberShade * P.fiberStrength * noise);
 }
 
 float wyvill(float d2) {
@@ -269,26 +273,60 @@ WoodLocation locateWood(vec3 p, bool wantFiber) {
   return w;
 }
 
-// The wood at a located point. faceIndex 0..5 (A..F) applies that face's tint; -1 (cuts, volumes) none.
-WoodSample shadeWood(WoodLocation w, int faceIndex) {
+// The wood at a located point in two steps: the layers, each set by its own group of texture parameters,
+// and their composition into the colour. The texture search (texture/shading_layers.hpp) computes a layer
+// once for all candidates that agree on its parameters: a candidate that changes only the rays keeps the
+// pores, fibres and rings of the others.
+struct WoodLayers {
+  float latewood;     // seasonOf(year): rings.offset, latewood_fraction, transition, boundary_softness
+  float pore;         // poreWeight: pores.* but darkness and shadow hue, and the latewood
+  float ray;          // rayWeight: rays.* but colour; 0 where rays.density or rays.opacity is 0
+  float fiber;        // fiberNoiseAt: fibers.width, fibers.length; 0 where fibers.strength is 0
+  float ringProfile;  // ringProfileAt(year): rings.offset, rings.profile_*
+  float ringNoise;    // the 1D ring colour noise at the year
+  float mottle;       // the mottling noise: color.mottle_scale; 0 where color.mottle_strength is 0
+};
+
+float fiberLayer(Cylindrical c) {
+  return P.fiberStrength > 0.0f ? fiberNoiseAt(c) : 0.0f;
+}
+float ringNoiseAt(float year) {
+  return valueNoise1(year, u_hashSeed + kRingColor);
+}
+float mottleAt(Cylindrical c) {
+  if (P.mottleStrength <= 0.0f) return 0.0f;
+  float m = P.mottleScale;
+  return fractalNoise3(vec3(c.x / m, c.y / m, c.height / (4.0f * m)), u_hashSeed + kMottle).x;
+}
+
+WoodLayers woodLayers(WoodLocation w) {
+  WoodLayers l;
+  l.latewood = seasonOf(w.year);
+  l.pore = poreWeight(w.c, l.latewood);
+  l.ray = rayWeight(w.c);
+  l.fiber = fiberLayer(w.c);
+  l.ringProfile = ringProfileAt(w.year);
+  l.ringNoise = ringNoiseAt(w.year);
+  l.mottle = mottleAt(w.c);
+  return l;
+}
+
+// faceIndex 0..5 (A..F) applies that face's tint; -1 (cuts, volumes) none.
+WoodSample composeWood(WoodLocation w, WoodLayers l, int faceIndex) {
   WoodSample s;
-  Cylindrical c = w.c;
   float knotDarkness = w.knotDarkness;
   s.fiberDirection = w.fiberDirection;
   s.year = w.year;
-  s.latewood = seasonOf(s.year);
-  s.pore = poreWeight(c, s.latewood);
-  s.ray = rayWeight(c);
+  s.latewood = l.latewood;
+  s.pore = l.pore;
+  s.ray = l.ray;
 
   // Pigment concentration t (Beer's law, Liu Sec. 4.3-4.4).
-  float t = P.seasonShading * s.latewood + ringProfileAt(s.year);
-  t += 0.5f * P.ringColorVariation * valueNoise1(s.year, u_hashSeed + kRingColor);
-  if (P.mottleStrength > 0.0f) {
-    float m = P.mottleScale;
-    t += 0.5f * P.mottleStrength * fractalNoise3(vec3(c.x / m, c.y / m, c.height / (4.0f * m)), u_hashSeed + kMottle).x;
-  }
+  float t = P.seasonShading * s.latewood + l.ringProfile;
+  t += 0.5f * P.ringColorVariation * l.ringNoise;
+  if (P.mottleStrength > 0.0f) t += 0.5f * P.mottleStrength * l.mottle;
   s.pigment = t;
-  s.shade = poreShadeOf(s.pore) * fiberShadeAt(c);
+  s.shade = poreShadeOf(s.pore) * fiberShadeOf(l.fiber);
 
   float sap = stepSmooth(P.sapwoodStart - 0.5f * P.sapwoodTransition, P.sapwoodStart + 0.5f * P.sapwoodTransition, s.year);
   vec3 early = max(mix(P.earlywoodColor, P.sapwoodEarlywoodColor, sap), vec3(1e-3f));
@@ -305,6 +343,11 @@ WoodSample shadeWood(WoodLocation w, int faceIndex) {
   else if (faceIndex == 5) color *= P.faceTintF;
   s.color = clamp(color, 0.0f, 1.0f);
   return s;
+}
+
+// The wood at a located point. faceIndex 0..5 (A..F) applies that face's tint; -1 (cuts, volumes) none.
+WoodSample shadeWood(WoodLocation w, int faceIndex) {
+  return composeWood(w, woodLayers(w), faceIndex);
 }
 
 // faceIndex 0..5 (A..F) applies that face's tint; -1 (cuts, volumes) applies none.
