@@ -36,11 +36,13 @@ int orientationOf(const OIIO::ImageSpec& spec) {
 }
 
 // A photo with an EXIF orientation, read through an ImageBuf and turned upright by OpenImageIO's own
-// reorient, then into `out` (its channels, or RGB with grey replicated and alpha dropped).
+// reorient, then into `out` (its channels, or RGB with grey replicated and alpha dropped). The turning is
+// done in the file's own pixel type (a phone JPEG: 8 bits), so the only float copy is `out`, as for
+// every other read (io/image.cpp checks the memory for that one).
 std::string readReoriented(const std::string& path, const OIIO::ImageSpec& config, Image& out,
                            std::size_t& nonFinite) {
   OIIO::ImageBuf stored(path, 0, 0, nullptr, &config);
-  if (!stored.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return stored.geterror();
+  if (!stored.read(0, 0, true)) return stored.geterror();
   OIIO::ImageBuf upright = OIIO::ImageBufAlgo::reorient(stored);
   if (upright.has_error()) return upright.geterror();
   stored.reset();  // the stored copy is not needed any more
@@ -48,13 +50,16 @@ std::string readReoriented(const std::string& path, const OIIO::ImageSpec& confi
   if (upright.spec().width != out.width || upright.spec().height != out.height ||
       (out.channels != channels && out.channels != 3))
     return "the file changed while being read";
-  if (out.channels != channels) {
-    const int order[3] = {0, channels >= 3 ? 1 : 0, channels >= 3 ? 2 : 0};
-    upright = OIIO::ImageBufAlgo::channels(upright, 3, order);
+  OIIO::ROI roi = upright.roi();
+  if (out.channels != channels && channels >= 3) {
+    roi.chend = 3;  // alpha and further channels dropped as they are read out
+  } else if (out.channels != channels) {
+    const int grey[3] = {0, 0, 0};
+    upright = OIIO::ImageBufAlgo::channels(upright, 3, grey);
     if (upright.has_error()) return upright.geterror();
+    roi = upright.roi();
   }
-  if (!upright.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, out.pixels.data()))
-    return upright.geterror();
+  if (!upright.get_pixels(roi, OIIO::TypeDesc::FLOAT, out.pixels.data())) return upright.geterror();
   nonFinite = countNonFinite(out.pixels, out.channels);
   return {};
 }
