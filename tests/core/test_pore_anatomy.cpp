@@ -11,10 +11,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <opencv2/core.hpp>
 
 #include "render/wood_model.hpp"
@@ -163,14 +165,25 @@ TEST(PoreAnatomy, VesselsAreDotsOnEndGrainAndStreaksAlongTheFibres) {
   EXPECT_NEAR(endGrain, 1.0, 0.35);
 }
 
-TEST(PoreAnatomy, RingPorousWoodPacksItsVesselsInTheEarlywood) {
-  const Block block(glm::vec3(40.0f));
+namespace {
+
+// Ring-porous wood of 3 mm rings around a pith 60 mm off: large pores in the earlywood, few small ones in
+// the latewood.
+WoodParameters ringPorous(float latewoodFraction, float transition, glm::vec2 radius, glm::vec2 density) {
   WoodParameters p = poresOnly();
   p.ringWidth = 3.0f;
   p.pithOrigin = {0, 0, -60};
-  p.latewoodFraction = 0.6f, p.transition = 0.1f;
-  p.poreRadiusEarly = 0.14f, p.poreRadiusLate = 0.03f;
-  p.poreDensityEarly = 0.8f, p.poreDensityLate = 0.15f;
+  p.latewoodFraction = latewoodFraction, p.transition = transition;
+  p.poreRadiusEarly = radius.x, p.poreRadiusLate = radius.y;
+  p.poreDensityEarly = density.x, p.poreDensityLate = density.y;
+  return p;
+}
+
+}  // namespace
+
+TEST(PoreAnatomy, RingPorousWoodPacksItsVesselsInTheEarlywood) {
+  const Block block(glm::vec3(40.0f));
+  const WoodParameters p = ringPorous(0.6f, 0.1f, {0.14f, 0.03f}, {0.8f, 0.15f});
   const WoodModel model(block, p, uniformRates(p, block));
   double poreEarly = 0, poreLate = 0;
   int early = 0, late = 0;
@@ -185,4 +198,61 @@ TEST(PoreAnatomy, RingPorousWoodPacksItsVesselsInTheEarlywood) {
   ASSERT_GT(late, 1000);
   // Pore area share: density x radius^2 gives ~ 0.8 * 0.14^2 / (0.15 * 0.03^2) ~ 100 times more.
   EXPECT_GT(poreEarly / early, 20.0 * poreLate / late);
+}
+
+// pores.earlywood_taper (ring-porous wood opens the year with its largest vessels): on an end-grain cut,
+// the pore area in the first third of the earlywood against the last third. Without the taper the two
+// are alike; with taper 1 the radius goes from 1.5x to 0.5x the earlywood radius over the earlywood, so the
+// first third holds pores of about 1.33x and the last of about 0.67x the radius: some 4x the area.
+TEST(PoreAnatomy, TheEarlywoodTaperPutsTheLargestPoresAtTheStartOfTheYear) {
+  const Block block(glm::vec3(40.0f));
+  WoodParameters p = ringPorous(0.5f, 0.05f, {0.1f, 0.02f}, {0.9f, 0.1f});
+  p.poreCellSize = 0.25f;
+  const auto thirds = [&](float taper) {
+    WoodParameters q = p;
+    q.poreEarlyTaper = taper;
+    const WoodModel model(block, q, uniformRates(q, block));
+    double first = 0, last = 0;
+    for (int y = 0; y < 2 * kSize; ++y)
+      for (int x = 0; x < 2 * kSize; ++x) {
+        const WoodSample s = model.evaluate({(x - kSize) * kPixelMm, 0.0f, (y - kSize) * kPixelMm});
+        const float phase = s.year - std::floor(s.year);  // ring offset 0: 0 at the ring line
+        if (phase < 0.5f / 3)
+          first += s.pore;
+        else if (phase > 0.5f * 2 / 3 && phase < 0.5f)
+          last += s.pore;
+      }
+    return first / std::max(last, 1e-9);
+  };
+  const double even = thirds(0.0f), tapered = thirds(1.0f);
+  std::printf("pore area, first over last third of the earlywood: one size %.2f, taper 1 %.2f\n", even,
+              tapered);
+  EXPECT_NEAR(even, 1.0, 0.25);  // one size: as many pores at the start as at the end
+  EXPECT_GT(tapered, 2.5);       // measured 2026-11-29 (see the docs' model.md)
+  EXPECT_GT(tapered, 2.0 * even);
+}
+
+// Taper 0 is the model without it, bit for bit (the presets without it render as before).
+TEST(PoreAnatomy, NoEarlywoodTaperIsTheModelWithoutIt) {
+  const Block block(glm::vec3(40.0f));
+  WoodParameters p = poresOnly();
+  p.ringWidth = 3.0f;
+  p.poreRadiusEarly = 0.1f, p.poreRadiusLate = 0.03f;
+  const WoodModel plain(block, p, uniformRates(p, block));
+  p.poreEarlyTaper = 0.3f;
+  const WoodModel tapered(block, p, uniformRates(p, block));
+  int differing = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const glm::vec3 at{(x - 0.5f * kSize) * kPixelMm, 0.0f, (y - 0.5f * kSize) * kPixelMm};
+      differing += plain.evaluate(at).pore != tapered.evaluate(at).pore;
+    }
+  EXPECT_GT(differing, 100);  // the parameter reaches the pores at all
+  p.poreEarlyTaper = 0.0f;
+  const WoodModel none(block, p, uniformRates(p, block));
+  for (int y = 0; y < kSize; y += 3)
+    for (int x = 0; x < kSize; x += 3) {
+      const glm::vec3 at{(x - 0.5f * kSize) * kPixelMm, 0.0f, (y - 0.5f * kSize) * kPixelMm};
+      ASSERT_EQ(plain.evaluate(at).pore, none.evaluate(at).pore);
+    }
 }

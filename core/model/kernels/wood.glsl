@@ -172,8 +172,14 @@ float ringProfileAt(float year) {
 // around the point are searched; the radius is capped at one cell for that.
 KERF_CONST int kPoresPerCell = 2;
 
-float poreWeight(Cylindrical c, float season) {
+float poreWeight(Cylindrical c, float season, float year) {
   float radius = P.poreRadiusEarly + season * (P.poreRadiusLate - P.poreRadiusEarly);
+  if (P.poreEarlyTaper > 0.0f) {
+    // pores.earlywood_taper: 1 + taper (1/2 - where in the earlywood), on the earlywood's share of the
+    // radius; the mean over the earlywood stays pores.radius_earlywood.
+    float intoEarlywood = clamp(yearPhase(year) / max(1.0f - P.latewoodFraction, 0.01f), 0.0f, 1.0f);
+    radius *= 1.0f + (1.0f - season) * P.poreEarlyTaper * (0.5f - intoEarlywood);
+  }
   float density = P.poreDensityEarly + season * (P.poreDensityLate - P.poreDensityEarly);
   if (radius <= 0.0f || density <= 0.0f) return 0.0f;
   float cell = P.poreCellSize;
@@ -302,7 +308,7 @@ float mottleAt(Cylindrical c) {
 WoodLayers woodLayers(WoodLocation w) {
   WoodLayers l;
   l.latewood = seasonOf(w.year);
-  l.pore = poreWeight(w.c, l.latewood);
+  l.pore = poreWeight(w.c, l.latewood, w.year);
   l.ray = rayWeight(w.c);
   l.fiber = fiberLayer(w.c);
   l.ringProfile = ringProfileAt(w.year);
