@@ -131,9 +131,9 @@ struct JointFarResidual {
 // steeply (weighted by sqrt(the knot's contour points), each of whose soft-L1 costs stays far below 1)
 // that no gain on the contours can carry the axis past the accuracy.
 struct MarkResidual {
-  glm::vec3 mark;
-  double freeMm;  // 0.9 x the mark's accuracy
-  double weight;  // 10 sqrt(near points) / accuracy, per mm beyond freeMm
+  glm::vec3 mark, faceNormal;  // the distance is taken on the face's plane (knotAxisMarkDistance)
+  double freeMm;               // 0.9 x the mark's accuracy
+  double weight;               // 10 sqrt(near points) / accuracy, per mm beyond freeMm
   template <typename T>
   bool operator()(const T* knot, T* residual) const {
     using std::sqrt;
@@ -141,7 +141,7 @@ struct MarkResidual {
     const T direction[3] = {knot[3] / norm, knot[4] / norm, knot[5] / norm};
     // A hinge with a rounded knee (quadratic over the first 10 % of the free distance): exactly zero
     // inside, and Levenberg-Marquardt does not crawl along its corner as it did along a sharp one.
-    const T beyond = knotAxisDistance(knot, direction, mark) - T(freeMm);
+    const T beyond = knotAxisMarkDistance(knot, direction, mark, faceNormal) - T(freeMm);
     const T knee(0.1 * freeMm);
     residual[0] = beyond <= T(0)  ? T(0)
                   : beyond < knee ? T(weight) * beyond * beyond / (T(2) * knee)
@@ -499,9 +499,10 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
       if (m.released) continue;
       const double accuracy = std::max(0.05f, m.accuracyMm);
       const double weight = 10.0 * std::sqrt(std::max(1, fittedNear[k])) / accuracy;
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MarkResidual, 1, 7>(new MarkResidual{
-                                   faceMmToBlock(block, m.face, m.point), 0.9 * accuracy, weight}),
-                               nullptr, knotParams[k].data());
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<MarkResidual, 1, 7>(new MarkResidual{
+              faceMmToBlock(block, m.face, m.point), block.face(m.face).normal, 0.9 * accuracy, weight}),
+          nullptr, knotParams[k].data());
     }
     problem.SetParameterLowerBound(knotParams[k].data(), 6, std::log(kMinSpeed));
     problem.SetParameterUpperBound(knotParams[k].data(), 6, std::log(maxSpeed));
@@ -600,8 +601,8 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
     e.fitted = fitted[k];
     e.axisMovedDeg = angleDeg(initial[k].direction, fitted[k].direction);
     for (const KnotMark& m : byId[e.id]) {
-      const float d = knotAxisDistance(&fitted[k].origin.x, &fitted[k].direction.x,
-                                       faceMmToBlock(block, m.face, m.point));
+      const float d = knotAxisMarkDistance(&fitted[k].origin.x, &fitted[k].direction.x,
+                                           faceMmToBlock(block, m.face, m.point), block.face(m.face).normal);
       if (m.released) {
         ++e.releasedMarks;
       } else {

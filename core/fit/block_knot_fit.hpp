@@ -63,8 +63,9 @@ struct BlockKnotFitEntry {
   std::string note;           // how it was initialised, or why it was skipped / not optimised
   BlockKnot initial, fitted;
   double axisMovedDeg = 0;  // angle between the initial and the fitted direction
-  // Issue 19 item 1: the fitted axis's largest distance from the marks that hold it (not released), and
-  // whether it is within each one's accuracy.
+  // Issue 19 item 1: the fitted axis's largest distance from the marks that hold it (not released), on
+  // each mark's face plane (field/block_knots.hpp knotAxisMarkDistance), and whether it is within each
+  // one's accuracy.
   double markDistanceMm = 0;
   bool marksHeld = true;
   int releasedMarks = 0;

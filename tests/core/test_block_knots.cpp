@@ -65,6 +65,27 @@ TEST(BlockKnots, FarFromTheKnotTheFieldIsTheStemFieldBitForBit) {
   EXPECT_GT(far, 1000);
 }
 
+// Issue 19 item 1: a mark's distance from the axis is taken on its face's plane. An axis through the origin
+// at 45 deg to the face z = 10 meets it at (10, 0, 10); a mark 1 mm further along x on that face is 1 mm
+// away there, but only cos 45 = 0.71 mm across the axis. Beside it along y, both are 1 mm.
+TEST(BlockKnots, AMarksDistanceIsMeasuredOnItsFace) {
+  const glm::vec3 origin(0.0f), direction = glm::normalize(glm::vec3(1, 0, 1)), normal(0, 0, 1);
+  const glm::vec3 along(11, 0, 10), beside(10, 1, 10), onAxis(10, 0, 10);
+  EXPECT_NEAR(knotAxisMarkDistance(&origin.x, &direction.x, along, normal), 1.0f, 1e-5f);
+  EXPECT_NEAR(knotAxisDistance(&origin.x, &direction.x, along), std::sqrt(0.5f), 1e-5f);
+  EXPECT_NEAR(knotAxisMarkDistance(&origin.x, &direction.x, beside, normal), 1.0f, 1e-5f);
+  EXPECT_NEAR(knotAxisMarkDistance(&origin.x, &direction.x, onAxis, normal), 0.0f, 1e-5f);
+  // The face's outward normal may point either way along the axis.
+  EXPECT_NEAR(knotAxisMarkDistance(&origin.x, &direction.x, along, -normal), 1.0f, 1e-5f);
+  // An axis parallel to the face never meets it: then at least the distance across the axis, and finite.
+  const glm::vec3 flat(1, 0, 0);
+  const float near = knotAxisMarkDistance(&origin.x, &flat.x, glm::vec3(5, 0, 0.5f), normal);
+  const float far = knotAxisMarkDistance(&origin.x, &flat.x, glm::vec3(5, 0, 2.0f), normal);
+  EXPECT_TRUE(std::isfinite(near) && std::isfinite(far));
+  EXPECT_GE(near, 0.5f - 1e-5f);
+  EXPECT_GE(far, 2.0f - 1e-5f);
+}
+
 TEST(BlockKnots, NearTheAxisTheKnotWins) {
   const KnotSetup s;
   for (float z : {-18.0f, 0.0f, 18.0f}) {
