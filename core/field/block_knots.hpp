@@ -101,8 +101,8 @@ T knotAxisDistance(const T* origin, const T* unitDirection, const glm::vec3& p) 
 // distance on the photo). Across the axis (knotAxisDistance) it is shorter by the cosine of the axis's
 // angle to the face normal: 0.75 at 41 deg, so a 1 mm accuracy held that way let the axis cross the face
 // 1.2 mm from the mark (the steep block of the spruce log bed, docs/knots.md). An axis within ~6 deg of
-// the face's plane meets it far away or never; there the plane distance is taken at that angle, and never
-// less than the distance across the axis (which the plane distance always is at least).
+// the face's plane meets it far away or never; there the plane distance is taken at that angle. Never less
+// than knotAxisDistance (which the plane distance always is at least for a mark beyond the knot's start).
 template <typename T>
 T knotAxisMarkDistance(const T* origin, const T* unitDirection, const glm::vec3& mark,
                        const glm::vec3& normal) {
@@ -118,12 +118,9 @@ T knotAxisMarkDistance(const T* origin, const T* unitDirection, const glm::vec3&
   // Within the plane: the part of d along the normal is what the clamp above left over; drop it.
   const T dNormal = d[0] * T(normal.x) + d[1] * T(normal.y) + d[2] * T(normal.z);
   const T e[3] = {d[0] - dNormal * T(normal.x), d[1] - dNormal * T(normal.y), d[2] - dNormal * T(normal.z)};
-  const T along = rel[0] * unitDirection[0] + rel[1] * unitDirection[1] + rel[2] * unitDirection[2];
-  const T a[3] = {rel[0] - along * unitDirection[0], rel[1] - along * unitDirection[1],
-                  rel[2] - along * unitDirection[2]};
-  const T inPlane2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-  const T across2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-  return sqrt((inPlane2 > across2 ? inPlane2 : across2) + T(1e-12));
+  const T inPlane = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + T(1e-12));
+  const T across = knotAxisDistance(origin, unitDirection, mark);
+  return inPlane > across ? inPlane : across;
 }
 
 // One knot's term of Eq. 6 at a point: its time T_k and its windowed smoothing (<= 0). The window is
