@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <exception>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <map>
@@ -325,21 +326,45 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     return field;
   };
   const bool alternative = report.pith.ambiguous && report.pith.flipped && options.fitAlternative;
-  const double end = alternative ? 0.75 : 0.95;
   // On the heap, so that the pores can swap the two without copying (GCC 12 also misreads such copies of
   // the rates' std::optional as uninitialised).
-  auto chosen = std::make_unique<GrowthFieldFitAlternative>(
-      fieldAround(report.pith.best, report, progress.part(0.45, end), true));
-  std::unique_ptr<GrowthFieldFitAlternative> mirrored;
+  std::unique_ptr<GrowthFieldFitAlternative> chosen, mirrored;
+  // The mirrored candidate's stages write their own copy of the report, taken before either candidate
+  // runs, so that it holds only what its own stages found.
   GrowthFieldFitReport other = report;
-  if (alternative) {
+  if (!alternative) {
+    chosen = std::make_unique<GrowthFieldFitAlternative>(
+        fieldAround(report.pith.best, report, progress.part(0.45, 0.95), true));
+  } else {
     // Mokume B.1: the mirrored pith explains the rings almost as well; fit it too so the user can pick.
-    try {
-      mirrored = std::make_unique<GrowthFieldFitAlternative>(
-          fieldAround(*report.pith.flipped, other, progress.part(end, 0.95), false));
-    } catch (const InputError& e) {
-      report.alternativeNote = std::string("the other candidate cannot be used as a field: ") + e.what();
-    }
+    // The two candidates are fitted side by side: most of a candidate's time is Ceres' linear algebra on
+    // one thread (distortion_fit.cpp), so two candidates keep two cores busy. The loops inside each then
+    // run on its own thread (OpenCV runs nested parallel loops serially), which changes no result.
+    // Only the chosen one reports progress and previews, so the bar moves forwards only.
+    // Errors are carried out of the worker threads and rethrown here, types intact (Cancelled too).
+    std::optional<std::string> mirroredError;
+    std::array<std::exception_ptr, 2> errors;
+    parallelTasks(2, [&](int which) {
+      try {
+        if (which == 0)
+          chosen = std::make_unique<GrowthFieldFitAlternative>(
+              fieldAround(report.pith.best, report, progress.part(0.45, 0.95), true));
+        else
+          mirrored = std::make_unique<GrowthFieldFitAlternative>(
+              fieldAround(*report.pith.flipped, other, Progress{nullptr, progress.stop}, false));
+      } catch (const InputError& e) {
+        if (which == 0)
+          errors[0] = std::current_exception();
+        else
+          mirroredError = e.what();
+      } catch (...) {
+        errors[which] = std::current_exception();
+      }
+    });
+    for (const std::exception_ptr& error : errors)
+      if (error) std::rethrow_exception(error);
+    if (mirroredError)
+      report.alternativeNote = "the other candidate cannot be used as a field: " + *mirroredError;
   }
   const bool photos =
       std::any_of(input.photos.begin(), input.photos.end(), [](const Image& i) { return !i.empty(); });

@@ -28,6 +28,15 @@ void parallelRows(int rows, const std::function<void(int)>& body, const Progress
   if (cancelled) throw Cancelled();
 }
 
+void parallelTasks(int tasks, const std::function<void(int)>& body) {
+  cv::parallel_for_(
+      cv::Range(0, tasks),
+      [&](const cv::Range& range) {
+        for (int task = range.start; task < range.end; ++task) body(task);
+      },
+      tasks);
+}
+
 void setWorkerThreads(int threads) {
   cv::setNumThreads(threads <= 0 ? -1 : threads);
 }

@@ -71,10 +71,10 @@ class TestAnnotationTools : public QObject {
   // Accepts the year dialog the layer opened with `value`.
   void answerDialog(const char* name, int value) {
     QInputDialog* dialog = nullptr;
-    QTRY_VERIFY((dialog = view()->findChild<QInputDialog*>(name)) != nullptr);
+    QTRY_VERIFY_WITH_TIMEOUT((dialog = view()->findChild<QInputDialog*>(name)) != nullptr, kTimeoutMs);
     dialog->setIntValue(value);
     dialog->accept();
-    QTRY_VERIFY(view()->findChild<QInputDialog*>(name) == nullptr);
+    QTRY_VERIFY_WITH_TIMEOUT(view()->findChild<QInputDialog*>(name) == nullptr, kTimeoutMs);
   }
 
   QTemporaryDir dir_;
@@ -97,13 +97,13 @@ void TestAnnotationTools::initTestCase() {
   // Shortcuts need an active window with the focus in the faces view (xvfb has no window manager).
   window_->activateWindow();
   QApplication::setActiveWindow(window_.get());
-  QTRY_VERIFY(window_->isActiveWindow());
+  QTRY_VERIFY_WITH_TIMEOUT(window_->isActiveWindow(), kTimeoutMs);
   QSignalSpy ready(window_.get(), &MainWindow::documentReady);
   window_->openDocument(project);
   QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, kTimeoutMs);
   QVERIFY(annotations().empty());
   view()->setFocus();
-  QTRY_VERIFY(view()->hasFocus());
+  QTRY_VERIFY_WITH_TIMEOUT(view()->hasFocus(), kTimeoutMs);
 }
 
 void TestAnnotationTools::drawsAPolylineTrace() {
@@ -345,11 +345,12 @@ void TestAnnotationTools::dragsReleasesAndWeighsKnotMarks() {
 
   key(Qt::Key_M);
   QInputDialog* dialog = nullptr;
-  QTRY_VERIFY((dialog = view()->findChild<QInputDialog*>("knotAccuracyDialog")) != nullptr);
+  QTRY_VERIFY_WITH_TIMEOUT((dialog = view()->findChild<QInputDialog*>("knotAccuracyDialog")) != nullptr,
+                           kTimeoutMs);
   QCOMPARE(dialog->doubleValue(), double(kDefaultKnotMarkAccuracyMm));
   dialog->setDoubleValue(2.5);
   dialog->accept();
-  QTRY_VERIFY(view()->findChild<QInputDialog*>("knotAccuracyDialog") == nullptr);
+  QTRY_VERIFY_WITH_TIMEOUT(view()->findChild<QInputDialog*>("knotAccuracyDialog") == nullptr, kTimeoutMs);
   QCOMPARE(annotations().knots[0].accuracyMm, 2.5f);
   QCOMPARE(annotations().knots[1].accuracyMm, 2.5f);
   QVERIFY(QDir().mkpath(KERF_TEST_ARTIFACTS_DIR));

@@ -118,7 +118,7 @@ void TestBadDocuments::badDocumentLeavesTheOpenOneUnchanged() {
   QMessageBox* box = visibleMessageBox();
   QVERIFY(box);
   box->accept();
-  QTRY_VERIFY(!visibleMessageBox());
+  QTRY_VERIFY_WITH_TIMEOUT(!visibleMessageBox(), kTimeoutMs);
 
   QVERIFY(!window_->isBusy());
   QCOMPARE(window_->documentName(), name);

@@ -201,7 +201,7 @@ void TestBlockKnotTable::angleEditTurnsTheKnot() {
   QVERIFY(box);
   box->setValue(0.075);
   QTest::keyClick(box, Qt::Key_Return);  // the delegate commits from the event loop
-  QTRY_COMPARE(document()->project().knots[0].speed, 0.075f);
+  QTRY_COMPARE_WITH_TIMEOUT(document()->project().knots[0].speed, 0.075f, kTimeoutMs);
   document()->undoStack()->undo();
   QCOMPARE(document()->project().knots[0], before);
 }

@@ -50,7 +50,7 @@ void TestCompareFaces::initTestCase() {
   // Shortcuts need an active window (xvfb has no window manager).
   window_->activateWindow();
   QApplication::setActiveWindow(window_.get());
-  QTRY_VERIFY(window_->isActiveWindow());
+  QTRY_VERIFY_WITH_TIMEOUT(window_->isActiveWindow(), kTimeoutMs);
   QCOMPARE(view()->display(), FaceDisplay::Photos);  // the demo has photos: they come first
 }
 
@@ -131,7 +131,7 @@ void TestCompareFaces::savesPictures() {
   auto* splitter = qobject_cast<QSplitter*>(window_->centralWidget());
   QVERIFY(splitter);
   splitter->setSizes({1000, 300});
-  QTRY_VERIFY(view()->width() > 800);
+  QTRY_VERIFY_WITH_TIMEOUT(view()->width() > 800, kTimeoutMs);
   press(4);
   view()->setSplitPosition(0.5);
   QVERIFY(view()->parentWidget()->grab().save(artifact("compare_faces")));

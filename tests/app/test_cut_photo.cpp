@@ -247,7 +247,8 @@ void TestCutPhoto::alignDialogTurnsAndMirrors() {
   const int steps = document()->undoStack()->index();
   controller()->alignAction()->trigger();
   CutPhotoDialog* dialog = nullptr;
-  QTRY_VERIFY((dialog = window_->findChild<CutPhotoDialog*>()) != nullptr && dialog->isVisible());
+  QTRY_VERIFY_WITH_TIMEOUT((dialog = window_->findChild<CutPhotoDialog*>()) != nullptr && dialog->isVisible(),
+                           kTimeoutMs);
   dialog->setRotation(-90);  // the anticlockwise button
   dialog->setFlip(true);
   QVERIFY(dialog->grab().save(testing::artifact("cut_photo_align_dialog")));

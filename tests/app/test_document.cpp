@@ -12,6 +12,9 @@
 using namespace kerf;
 
 namespace {
+
+// A ceiling for a wait that ends on a signal, not a measure: a busy machine must not fail the test.
+constexpr int kTimeoutMs = 60000;
 std::size_t indexOf(const char* id) {
   return *parameterIndex(id);
 }
@@ -217,17 +220,17 @@ class DocumentTest : public QObject {
     Autosave autosave(&document_, dir.path(), 40);
     QSignalSpy saved(&autosave, &Autosave::saved);
     document_.editParameter(indexOf("growth.ring_width"), scalar(5.0f), true);
-    QTRY_COMPARE(saved.count(), 1);
+    QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, kTimeoutMs);
     QVERIFY(QFile::exists(autosave.currentFile()));
     QCOMPARE(loadProject(autosave.currentFile().toStdString()).params.ringWidth, 5.0f);
     QTest::qWait(300);  // several ticks, nothing changed
     QCOMPARE(saved.count(), 1);
     document_.editParameter(indexOf("growth.ring_width"), scalar(4.0f), true);
-    QTRY_COMPARE(saved.count(), 2);
+    QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 2, kTimeoutMs);
     QCOMPARE(loadProject(autosave.currentFile().toStdString()).params.ringWidth, 4.0f);
     document_.undoStack()->undo();
     document_.undoStack()->undo();
-    QTRY_VERIFY(!QFile::exists(autosave.currentFile()));
+    QTRY_VERIFY_WITH_TIMEOUT(!QFile::exists(autosave.currentFile()), kTimeoutMs);
   }
 
  private:

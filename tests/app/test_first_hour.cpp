@@ -179,7 +179,8 @@ void TestFirstHour::walkthroughFromPhotosToCut() {
   QSignalSpy rendered(window_.get(), &MainWindow::facesRendered);
   window_->activateWindow();
   QApplication::setActiveWindow(window_.get());
-  QTRY_VERIFY(window_->isActiveWindow());  // shortcuts need the active window (xvfb has no window manager)
+  QTRY_VERIFY_WITH_TIMEOUT(window_->isActiveWindow(),
+                           kTimeoutMs);  // shortcuts need the active window (xvfb has no window manager)
   QTest::keyClick(window_.get(), Qt::Key_R, Qt::ControlModifier);
   QVERIFY2(path->isRunning(), qPrintable(failed.isEmpty() ? QStringLiteral("Ctrl+R did not start it")
                                                           : failed.front().front().toString()));

@@ -174,7 +174,7 @@ void TestMainWindow::malformedProjectShowsError() {
   QVERIFY(box);
   QCOMPARE(box->text(), window_->lastError());
   box->accept();
-  QTRY_VERIFY(!visibleMessageBox());
+  QTRY_VERIFY_WITH_TIMEOUT(!visibleMessageBox(), kTimeoutMs);
 
   // The demo is still the document and still usable.
   QVERIFY(!window_->isBusy());
@@ -246,10 +246,10 @@ void TestMainWindow::draggingTheCutPlaneChangesTheCutPanel() {
   // The demo opens with the cut shown: hide it, then show it again.
   QVERIFY(window_->document()->cutEnabled());
   QTest::mouseClick(show, Qt::LeftButton, {}, QPoint(8, show->height() / 2));  // on the box itself
-  QTRY_VERIFY(!window_->document()->cutEnabled());
+  QTRY_VERIFY_WITH_TIMEOUT(!window_->document()->cutEnabled(), kTimeoutMs);
   QVERIFY(!window_->viewport()->cutEnabled());
   QTest::mouseClick(show, Qt::LeftButton, {}, QPoint(8, show->height() / 2));
-  QTRY_VERIFY(window_->document()->cutEnabled());
+  QTRY_VERIFY_WITH_TIMEOUT(window_->document()->cutEnabled(), kTimeoutMs);
   QVERIFY(window_->viewport()->cutEnabled());
   window_->document()->editCutPlane({5.0f, 0.0f, 0.0f}, true);  // facing +x: the default view sees it
   const int steps = window_->document()->undoStack()->count();

@@ -189,7 +189,7 @@ void TestPhotoImport::importsPhotosAsOneUndoStep() {
   const QPoint handle =
       picker->photoToWidget(QPointF(dialog.setup(1).corners[1].x, dialog.setup(1).corners[1].y)).toPoint();
   QTest::mouseMove(picker, handle);
-  QTRY_VERIFY(!picker->loupeRect().isNull());
+  QTRY_VERIFY_WITH_TIMEOUT(!picker->loupeRect().isNull(), kTimeoutMs);
   const QImage shot = dialog.grab().toImage();
   QVERIFY(shot.save(QStringLiteral(KERF_TEST_ARTIFACTS_DIR "/photo_import_dialog.png")));
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <stop_token>
 
 #include "field/growth_field.hpp"
 #include "fit/growth_field_fit.hpp"
@@ -18,6 +19,7 @@
 #include "params/parameter_schema.hpp"
 #include "schema_checks.hpp"
 #include "util/error.hpp"
+#include "util/parallel.hpp"
 
 using namespace kerf;
 using kerf::testing::renderRingImage;
@@ -141,6 +143,37 @@ TEST(GrowthFieldFit, MokumeSampleCN03ReachesTheAuthorsError) {
     EXPECT_NE(fit.report.alternativeNote.find("outside its allowed range"), std::string::npos)
         << fit.report.alternativeNote;
   }
+}
+
+// CN03's two pith candidates are fitted side by side (growth_field_fit.cpp): on one thread or two, the
+// same fields bit for bit, and a stop request honoured while both run.
+TEST(GrowthFieldFit, TheTwoCandidatesFittedSideBySideGiveTheSameFieldsOnAnyThreadCount) {
+  if (!kerf::testing::cn03Available())
+    GTEST_SKIP() << "reference data not found at " << kerf::testing::cn03Folder() << " (../shared absent)";
+  const GrowthFieldFitInput input = kerf::testing::cn03FitInput();
+  const int before = workerThreads();
+  setWorkerThreads(1);
+  const GrowthFieldFitResult one = fitGrowthFieldToSample(input, Block{}, WoodParameters{});
+  setWorkerThreads(2);
+  const GrowthFieldFitResult two = fitGrowthFieldToSample(input, Block{}, WoodParameters{});
+  setWorkerThreads(before);
+  ASSERT_TRUE(one.report.pith.ambiguous);
+  ASSERT_TRUE(one.alternative && two.alternative);
+  ASSERT_TRUE(one.rates && two.rates && one.alternative->rates && two.alternative->rates);
+  EXPECT_EQ(one.rates->rates, two.rates->rates);
+  EXPECT_EQ(one.alternative->rates->rates, two.alternative->rates->rates);
+  EXPECT_EQ(one.params.pithOrigin, two.params.pithOrigin);
+  EXPECT_EQ(one.params.ringWidth, two.params.ringWidth);
+  EXPECT_EQ(one.report.finalLossRings, two.report.finalLossRings);
+  EXPECT_EQ(one.report.alternativeLossRings, two.report.alternativeLossRings);
+
+  std::stop_source source;
+  Progress stopping;
+  stopping.stop = source.get_token();
+  stopping.report = [&](double f) {
+    if (f > 0.6) source.request_stop();  // within the candidates' stage (0.45 .. 0.95)
+  };
+  EXPECT_THROW(fitGrowthFieldToSample(input, Block{}, WoodParameters{}, {}, stopping), Cancelled);
 }
 
 // The pith fit's warnings reach the log as warnings by their stated severity (the CLI prints them to
