@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
-#include <exception>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <map>
@@ -337,32 +336,24 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
         fieldAround(report.pith.best, report, progress.part(0.45, 0.95), true));
   } else {
     // Mokume B.1: the mirrored pith explains the rings almost as well; fit it too so the user can pick.
-    // The two candidates are fitted side by side: most of a candidate's time is Ceres' linear algebra on
-    // one thread (distortion_fit.cpp), so two candidates keep two cores busy. The loops inside each then
-    // run on its own thread (OpenCV runs nested parallel loops serially), which changes no result.
+    // The two candidates are fitted side by side (parallelTasks): most of a candidate's time is Ceres'
+    // linear algebra on one thread (distortion_fit.cpp), so two candidates keep two cores busy, and the
+    // loops inside either use both cores whenever the other is not in one. No result changes.
     // Only the chosen one reports progress and previews, so the bar moves forwards only.
-    // Errors are carried out of the worker threads and rethrown here, types intact (Cancelled too).
     std::optional<std::string> mirroredError;
-    std::array<std::exception_ptr, 2> errors;
     parallelTasks(2, [&](int which) {
+      if (which == 0) {
+        chosen = std::make_unique<GrowthFieldFitAlternative>(
+            fieldAround(report.pith.best, report, progress.part(0.45, 0.95), true));
+        return;
+      }
       try {
-        if (which == 0)
-          chosen = std::make_unique<GrowthFieldFitAlternative>(
-              fieldAround(report.pith.best, report, progress.part(0.45, 0.95), true));
-        else
-          mirrored = std::make_unique<GrowthFieldFitAlternative>(
-              fieldAround(*report.pith.flipped, other, Progress{nullptr, progress.stop}, false));
+        mirrored = std::make_unique<GrowthFieldFitAlternative>(
+            fieldAround(*report.pith.flipped, other, Progress{nullptr, progress.stop}, false));
       } catch (const InputError& e) {
-        if (which == 0)
-          errors[0] = std::current_exception();
-        else
-          mirroredError = e.what();
-      } catch (...) {
-        errors[which] = std::current_exception();
+        mirroredError = e.what();
       }
     });
-    for (const std::exception_ptr& error : errors)
-      if (error) std::rethrow_exception(error);
     if (mirroredError)
       report.alternativeNote = "the other candidate cannot be used as a field: " + *mirroredError;
   }

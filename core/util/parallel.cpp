@@ -1,7 +1,11 @@
 #include "util/parallel.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <exception>
 #include <opencv2/core/utility.hpp>
+#include <thread>
+#include <vector>
 
 namespace kerf {
 
@@ -29,12 +33,24 @@ void parallelRows(int rows, const std::function<void(int)>& body, const Progress
 }
 
 void parallelTasks(int tasks, const std::function<void(int)>& body) {
-  cv::parallel_for_(
-      cv::Range(0, tasks),
-      [&](const cv::Range& range) {
-        for (int task = range.start; task < range.end; ++task) body(task);
-      },
-      tasks);
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(tasks, 0)));
+  const auto run = [&](int task) {
+    try {
+      body(task);
+    } catch (...) {
+      errors[task] = std::current_exception();
+    }
+  };
+  if (workerThreads() <= 1) {
+    for (int task = 0; task < tasks; ++task) run(task);
+  } else {
+    std::vector<std::thread> threads;
+    for (int task = 1; task < tasks; ++task) threads.emplace_back(run, task);
+    if (tasks > 0) run(0);
+    for (std::thread& t : threads) t.join();
+  }
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
 }
 
 void setWorkerThreads(int threads) {

@@ -11,9 +11,12 @@ namespace kerf {
 // when progress.stop is requested; reports the fraction of rows done.
 void parallelRows(int rows, const std::function<void(int row)>& body, const Progress& progress = {});
 
-// Calls body(task) for every task in [0, tasks), each a stripe of its own: for a few long tasks, which
-// parallelRows would group. Loops inside a task run serially on its thread (OpenCV does not nest), so
-// results do not change. No progress; an exception from body leaves it (OpenCV rewraps it): catch inside.
+// Calls body(task) for every task in [0, tasks) at the same time, each on a thread of its own (task 0 on
+// the caller's): for a few long tasks that are mostly serial inside. A task's own parallelRows loops use
+// the thread pool when it is free and otherwise run serially on the task's thread (OpenCV runs
+// concurrent loops one at a time), so a task left alone gets both cores back; results do not depend on
+// it. With one worker thread (setWorkerThreads(1)) the tasks run one after the other. The first
+// exception a task throws is rethrown once all have ended.
 void parallelTasks(int tasks, const std::function<void(int task)>& body);
 
 // Sets the number of worker threads (0 = all cores).
