@@ -7,8 +7,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <optional>
+#include <set>
 
 #include "fit/ceres_progress.hpp"
 #include "fit/pith_fit.hpp"
@@ -537,7 +539,21 @@ BlockKnotFitResult fitKnots(const IsoContours& contours, const Block& block, con
       problem.SetParameterBlockConstant(&kStem);
     }
     ceres::Solver::Options so;
-    so.linear_solver_type = ceres::DENSE_QR;
+    // Each residual holds one contour's level and the few shared parameters (pith, knots, kStem): the
+    // structure of bundle adjustment. The Schur complement eliminates the hundreds of levels, so a step
+    // solves a dense system of the shared parameters only, instead of a QR of the whole Jacobian
+    // (perf on the knot bed's dead block: the dense QR was ~60 % of the fit).
+    so.linear_solver_type = ceres::DENSE_SCHUR;
+    auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+    std::vector<double*> blocks;
+    problem.GetParameterBlocks(&blocks);
+    const std::set<const double*> levelBlocks = [&] {
+      std::set<const double*> out;
+      for (const double& level : levels) out.insert(&level);
+      return out;
+    }();
+    for (double* block : blocks) ordering->AddElementToGroup(block, levelBlocks.count(block) ? 0 : 1);
+    so.linear_solver_ordering = ordering;
     so.max_num_iterations = options.maxIterations;
     so.function_tolerance = 1e-7;
     so.num_threads = 1;  // bitwise reproducible

@@ -37,8 +37,8 @@ TEST(KnotLogBed, TheHiddenCutMeasuresRingDistancesInMillimetres) {
 namespace {
 
 // One of the bed's blocks (bench/knot_log_testbed.cpp picks them by rule from the log's data), smaller and
-// coarser than the bed's 50 mm at 6.4 px/mm, to run in about ten seconds (live) to a minute (dead) on one
-// core (the joint pith-and-knot stage's dense solve grows with the contours). At 40 mm every contour lies
+// coarser than the bed's 50 mm at 6.4 px/mm, to run in seconds on one core (the knot stages' solves grow
+// with the contours, block_knot_fit.cpp). At 40 mm every contour lies
 // within the knot's reach and the fit stops ("no ring contours to fit the growth rates to").
 BedBlockResult runSmallBedBlock(const LogModel& log, const std::string& name) {
   const std::vector<BedBlockSpec> specs = pickBedBlocks(log);
