@@ -100,6 +100,16 @@ void printBlockLine(const BedBlockResult& b) {
                 r.knotColour.darkening.y, r.knotColour.darkening.z);
   for (const KnotOutline& o : r.knotOutlines)
     std::printf(" knot %d's edge on %c: %s;", o.knot, faceLetter(o.face), o.note.c_str());
+  for (const KnotRingScaleFit& f : r.knotRings) {
+    for (const KnotRingCount& c : f.counts)
+      std::printf(" knot %d's own rings on %c: %s;", f.knot, faceLetter(c.face), c.note.c_str());
+    if (f.fitted) {
+      std::printf(" knot %d's ring scale %.3f (the model's own rings", f.knot, f.ringScale);
+      for (std::size_t i = 0; i < f.modelAfter.size(); ++i)
+        std::printf(" %.1f -> %.1f", f.modelBefore[i], f.modelAfter[i]);
+      std::printf(");");
+    }
+  }
   for (const BedKnotResult& k : b.knots)
     std::printf(
         " knot %d: contour error near it %.3f, at the true size %.3f ring spacings; detected contours off "
