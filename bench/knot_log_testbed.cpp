@@ -4,11 +4,12 @@
 // Prints one row per knot and case (the death as measured, and removed), against issue 19's targets.
 //
 //   kerf_knot_log_testbed [LOG_FOLDER] [--only BLOCK] [--size MM] [--px PX_PER_MM] [--no-reference]
-//                         [--save DIR]
+//                         [--save DIR] [--no-knot-rings]
 //
 // LOG_FOLDER defaults to ../shared/data/logs/spruce-gran1; --only runs one block by name ("live", "dead",
 // "steep", "two knots"); --size and --px change the blocks' size and the photos' resolution (6.4 px/mm);
-// --no-reference skips the fit without marks; --save writes each block's photos and ring images there.
+// --no-reference skips the fit without marks; --save writes each block's photos and ring images there;
+// --no-knot-rings leaves the knots' own rings uncounted.
 //
 // Minutes: each block is rendered, detected and fitted twice (with the marks, and without them as the
 // reference for the rings). Not a test; tests/core/test_knot_log_bed.cpp runs one small block.
@@ -100,15 +101,10 @@ void printBlockLine(const BedBlockResult& b) {
                 r.knotColour.darkening.y, r.knotColour.darkening.z);
   for (const KnotOutline& o : r.knotOutlines)
     std::printf(" knot %d's edge on %c: %s;", o.knot, faceLetter(o.face), o.note.c_str());
-  for (const KnotRingScaleFit& f : r.knotRings) {
-    for (const KnotRingCount& c : f.counts)
-      std::printf(" knot %d's own rings on %c: %s;", f.knot, faceLetter(c.face), c.note.c_str());
-    if (f.fitted) {
-      std::printf(" knot %d's ring scale %.3f (the model's own rings", f.knot, f.ringScale);
-      for (std::size_t i = 0; i < f.modelAfter.size(); ++i)
-        std::printf(" %.1f -> %.1f", f.modelBefore[i], f.modelAfter[i]);
-      std::printf(");");
-    }
+  for (const KnotRingAges& a : r.knotRings) {
+    for (const KnotRingAgeFace& f : a.faces)
+      std::printf(" knot %d's own rings on %c: %s;", a.knot, faceLetter(f.count.face), f.count.note.c_str());
+    std::printf(" knot %d's own rings: %s;", a.knot, a.note.c_str());
   }
   for (const BedKnotResult& k : b.knots)
     std::printf(
@@ -136,6 +132,8 @@ int main(int argc, char** argv) {
         options.photos.pxPerMm = std::stof(argv[++i]);
       else if (arg == "--size" && i + 1 < argc)
         size = std::stof(argv[++i]);
+      else if (arg == "--no-knot-rings")
+        options.fit.countKnotRings = false;
       else if (arg == "--no-reference")
         options.withoutMarks = false;
       else if (arg == "--save" && i + 1 < argc)

@@ -90,7 +90,6 @@ void WoodProgram::setModel(const WoodModel& model) {
     // Alive (infinity) as the largest float: a uniform's infinity is not portable GLSL 3.30.
     program_.setUniformValue(("u_blockKnotDeath" + index).constData(),
                              std::min(knots[i].deathTime, std::numeric_limits<float>::max()));
-    program_.setUniformValue(("u_blockKnotRingScale" + index).constData(), knots[i].ringScale);
     program_.setUniformValue(("u_blockKnotUp" + index).constData(), toQt(model.knots().up(i)));
     program_.setUniformValue(("u_blockKnotSide" + index).constData(), toQt(model.knots().side(i)));
     program_.setUniformValue(("u_blockKnotId" + index).constData(), knots[i].id);

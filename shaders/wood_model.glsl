@@ -106,7 +106,6 @@ uniform float u_blockKnotSpeed[kMaxBlockKnots];
 uniform float u_blockKnotTaper[kMaxBlockKnots];     // BlockKnot::taper (0: the cone of Eq. 7)
 uniform float u_blockKnotTaperAge[kMaxBlockKnots];  // years
 uniform float u_blockKnotDeath[kMaxBlockKnots];     // BlockKnot::deathTime, years; a huge number: alive
-uniform float u_blockKnotRingScale[kMaxBlockKnots]; // BlockKnot::ringScale: the knot's own rings per stem year
 uniform vec3 u_blockKnotUp[kMaxBlockKnots];         // BlockKnots::up/side: the frame of beta (knotAngleOf)
 uniform vec3 u_blockKnotSide[kMaxBlockKnots];
 uniform int u_blockKnotId[kMaxBlockKnots];          // BlockKnot::id: the seed of the knot's checks
@@ -159,20 +158,10 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
     bool dead = deathTime < 1e30;
     float speed = blockKnotSpeed(i, min(stemTime, deathTime));
     float time = distance / (speed * P.ringWidth);
-    float frozen = time;
-    float ringShift = 0.0;
-    float ringScale = u_blockKnotRingScale[i];
-    if (ringScale != 1.0) {  // knotTerm: the knot's own rings inside its surface
-      float pivot = deathTime < stemTime ? deathTime : stemTime;
-      if (time < pivot) {
-        float scaled = pivot - ringScale * (pivot - time);
-        ringShift = scaled - time;
-        time = scaled;
-      }
-    }
     float m = time < stemTime ? time : stemTime;
     float alive = knotSmoothMinOf(stemTime, time, P.knotSmoothStem);
     float delta = alive - m;
+    float frozen = time;
     if (deathTime < stemTime) {
       // Eq. 5 in Larsson's stem time (stemTimePerYear), and back to years.
       float c = P.ringWidth / P.knotStemRadius;
@@ -204,7 +193,7 @@ float mergeBlockKnots(vec3 p, float stemTime, float stemRadius, out float darkne
       deadShade = max(deadShade, deadKnotShade(ts, time * c, tDeath));
     }
     if (stemTime > 0.0) {
-      float e = clamp(((time - ringShift) / stemTime - (1.0 - P.knotEdgeSoftness)) / max(P.knotEdgeSoftness, 1e-4), 0.0, 1.0);
+      float e = clamp((time / stemTime - (1.0 - P.knotEdgeSoftness)) / max(P.knotEdgeSoftness, 1e-4), 0.0, 1.0);
       darkness = max(darkness, window * (1.0 - e * e * (3.0 - 2.0 * e)));
     }
     ++inReach;

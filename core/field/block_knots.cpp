@@ -1,21 +1,12 @@
 #include "field/block_knots.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <glm/geometric.hpp>
 
 #include "model/knot_check_kernels.hpp"
 #include "util/error.hpp"
 
 namespace kerf {
-
-namespace {
-std::string shortNumber(float v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(v));
-  return buffer;
-}
-}  // namespace
 
 void validate(const BlockKnot& knot, const std::string& what) {
   const auto finite = [](glm::vec3 v) {
@@ -35,10 +26,6 @@ void validate(const BlockKnot& knot, const std::string& what) {
     throw InputError(what +
                      ": the death time must be a positive number of years from the pith (or none: "
                      "an alive knot)");
-  if (!(knot.ringScale >= kMinKnotRingScale && knot.ringScale <= kMaxKnotRingScale))
-    throw InputError(what +
-                     ": the ring scale (the knot's own rings per year of the block's field) must lie " +
-                     "between " + shortNumber(kMinKnotRingScale) + " and " + shortNumber(kMaxKnotRingScale));
 }
 
 void knotFrame(const glm::vec3& direction, const glm::vec3& pithDirection, glm::vec3& up, glm::vec3& side) {
@@ -80,8 +67,8 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
     KnotDeathAt<float> death{knot.deathTime, 0.0f};
     const float rel[3] = {p.x - knot.origin.x, p.y - knot.origin.y, p.z - knot.origin.z};
     if (knot.dead()) death.beta = knotAngleOf(rel, &knot.direction.x, up_[i], side_[i]);
-    const KnotTerm<float> term = knotTerm(stemTime, distance, stemRadius, speed, ringWidth_, s.knotSmoothStem,
-                                          s, death, knot.ringScale);
+    const KnotTerm<float> term =
+        knotTerm(stemTime, distance, stemRadius, speed, ringWidth_, s.knotSmoothStem, s, death);
     if (!(term.window > 0.0f)) continue;  // out of reach: G unchanged, bit for bit
     knotMin = std::min(knotMin, term.time);
     sumSmoothing += term.smoothing;  // Eq. 6
@@ -106,10 +93,9 @@ BlockKnotSample BlockKnots::merge(const glm::vec3& p, float stemTime, float stem
       deadShade = std::max(deadShade, deadKnotShade(ts, term.time * c, tDeath, s));
     }
     if (stemTime > 0.0f) {
-      // Sec. 4.3: darker inside the knot, fading over knots.edge_softness of its growth time (the knot
-      // time before its ring scale: the scale moves the knot's rings, not its colour).
-      const float x = ((term.time - term.ringShift) / stemTime - (1.0f - s.knotEdgeSoftness)) /
-                      std::max(s.knotEdgeSoftness, 1e-4f);
+      // Sec. 4.3: darker inside the knot, fading over knots.edge_softness of its growth time.
+      const float x =
+          (term.time / stemTime - (1.0f - s.knotEdgeSoftness)) / std::max(s.knotEdgeSoftness, 1e-4f);
       const float c = std::clamp(x, 0.0f, 1.0f);
       out.darkness = std::max(out.darkness, term.window * (1.0f - c * c * (3.0f - 2.0f * c)));
     }

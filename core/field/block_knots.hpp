@@ -47,26 +47,13 @@ struct BlockKnot {
   // The stem time G (years from the pith) at which the branch died; infinity: alive. After it the knot
   // keeps the section it had (its speed and taper are those of its death) and is encased (Eq. 5).
   float deathTime = std::numeric_limits<float>::infinity();
-  // The knot's own rings per stem year (issue 19 item 2). Eq. 7's knot time T_k = d_k / (v_k w) puts as
-  // many rings inside a live knot as the block's field counts years from the pith (G at its surface; a
-  // dead knot: its death). A real branch is as old as the tree's rings from the pith out, and a block's
-  // field, extrapolated from its own ring width, overcounts them where the young rings were wider (the
-  // spruce log: 9 rings in a knot whose block field says 16). So inside the knot (T_k < pivot = min(G,
-  // death)) the knot time becomes pivot - ringScale (pivot - T_k): ringScale x pivot rings from the axis
-  // to the surface, each joining the stem's ring of the same year at the surface, which stays where it
-  // was (T_k = pivot). Counted on the photos (rings/knot_ring_count.hpp); 1: Mokume's knot, bit for bit.
-  float ringScale = 1.0f;
 
   bool dead() const { return std::isfinite(deathTime); }
 
   bool operator==(const BlockKnot&) const = default;
 };
 
-inline constexpr float kMaxKnotTaper = 0.95f;
-// BlockKnot::ringScale. At most 1: the knot's centre stays at or after the block field's year 0 (the
-// pith), and a knot with more rings than that would need years before it.
-inline constexpr float kMinKnotRingScale = 0.05f,
-                       kMaxKnotRingScale = 1.0f;  // below 1: the knot still starts on the pith with no width
+inline constexpr float kMaxKnotTaper = 0.95f;  // below 1: the knot still starts on the pith with no width
 
 // v_k at stem time G (BlockKnot::taper), for any scalar type (Ceres Jets in the fit); capped at
 // maxSpeed, since past the reach a knot could not be the minimum (knotTerm).
@@ -94,7 +81,7 @@ inline constexpr std::size_t kMaxBlockKnots = 1'000;
 
 // Throws InputError naming `what` (e.g. "knots[1]") for a non-finite or zero direction, a speed outside
 // (0, 1), a taper outside [-kMaxKnotTaper, kMaxKnotTaper], a taper age that is not positive or a death
-// time that is not positive (infinity: alive), a ring scale outside [kMinKnotRingScale, kMaxKnotRingScale].
+// time that is not positive (infinity: alive).
 void validate(const BlockKnot& knot, const std::string& what);
 
 // The distance from p to the knot's half-line, for any scalar type (Ceres Jets in the fit).
@@ -143,7 +130,6 @@ struct KnotTerm {
   T time;
   T smoothing;
   T window;
-  T ringShift;  // what BlockKnot::ringScale added to the knot time (0 outside the knot or at scale 1)
 };
 // The knot's dead-knot state at a point (BlockKnot::deathTime): the death time and the angle beta around
 // the knot axis (0 = sideways, pi/2 = towards the pith axis' direction, Larsson's "above"). An alive
@@ -161,23 +147,12 @@ inline float stemTimePerYear(float ringWidth, const KnotSettings& s) {
 template <typename T>
 KnotTerm<T> knotTerm(const T& stemTime, const T& knotDistance, const T& stemRadius, const T& speed,
                      float ringWidth, const T& kStem, const KnotSettings& s,
-                     const KnotDeathAt<T>& death = {T(std::numeric_limits<float>::infinity()), T(0)},
-                     float ringScale = 1.0f) {
-  KnotTerm<T> out{T(0), T(0), T(0), T(0)};
+                     const KnotDeathAt<T>& death = {T(std::numeric_limits<float>::infinity()), T(0)}) {
+  KnotTerm<T> out{T(0), T(0), T(0)};
   if (!(stemRadius > T(1e-3f))) return out;
   out.window = knotWindowOf(knotDistance / stemRadius, s.knotReachStart, s.knotReachEnd);
   if (!(out.window > T(0))) return out;
   out.time = knotDistance / (speed * T(ringWidth));
-  if (ringScale != 1.0f) {
-    // BlockKnot::ringScale: the knot's own rings inside its surface. Monotone in T_k and equal to it at
-    // the surface, so the union below neither folds nor moves the knot's edge or the stem's rings.
-    const T pivot = death.deathTime < stemTime ? death.deathTime : stemTime;
-    if (out.time < pivot) {
-      const T scaled = pivot - T(ringScale) * (pivot - out.time);
-      out.ringShift = scaled - out.time;
-      out.time = scaled;
-    }
-  }
   // One smoothness s for the whole union, as Mokume's Eq. 7 (knots.k_stem), not Larsson's adaptive k:
   // where k switches from k_knot to k_stem at the knot's edge, G_k falls by up to 0.13 years moving
   // outward (measured with the schema defaults), and rings would fold there.

@@ -408,11 +408,12 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
     report.knotSmoothStem = knots.kStem;
     report.knotIterations = knots.iterations;
     report.knotSeconds = knots.seconds;
-    // The knots' own rings inside them, as many as the photos show (issue 19 item 2).
-    if (photos && !out.knots.empty() && !report.knotOutlines.empty())
-      report.knotRings =
-          fitKnotRingScales(input.photos, block, stem, KnotSettings::fromParameters(out.params), out.knots,
-                            report.knotOutlines);
+    // The knots' own rings on the photos against the field's years (issue 19 item 2), reported.
+    if (options.countKnotRings && photos && !out.knots.empty() && !report.knotOutlines.empty())
+      report.knotRings = compareKnotRings(input.photos, block, stem,
+                                          BlockKnots(out.knots, KnotSettings::fromParameters(out.params),
+                                                     out.params.ringWidth, stem.axis().direction),
+                                          report.knotOutlines);
   }
   // Step 3: the colours of the wood and of each face, given the field (Mokume A.2.3).
   if (options.fitColours && photos && out.rates) {
@@ -605,21 +606,12 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
               ? format("; taper %.3f (speed %.3f at %.1f years from the pith)", b.taper, b.speed, b.taperAge)
                     .c_str()
               : ""));
-    for (const KnotRingScaleFit& f : r.knotRings) {
-      if (f.knot != k.id) continue;
-      for (const KnotRingCount& c : f.counts)
-        lines.push_back(
-            format("  knot %d's own rings on face %c: %s", k.id, faceLetter(c.face), c.note.c_str()));
-      if (!f.fitted) {
-        if (!f.note.empty()) lines.push_back(format("  knot %d: %s", k.id, f.note.c_str()));
-        continue;
-      }
-      std::string model;
-      for (std::size_t i = 0; i < f.modelAfter.size(); ++i)
-        model += format("%s%.1f -> %.1f", i ? ", " : "", f.modelBefore[i], f.modelAfter[i]);
-      lines.push_back(
-          format("  knot %d's ring scale %.3f: the model's own rings inside it %s, as counted on the photos",
-                 k.id, f.ringScale, model.c_str()));
+    for (const KnotRingAges& a : r.knotRings) {
+      if (a.knot != k.id) continue;
+      for (const KnotRingAgeFace& f : a.faces)
+        lines.push_back(format("  knot %d's own rings on face %c: %s", k.id, faceLetter(f.count.face),
+                               f.count.note.c_str()));
+      lines.push_back(format("  knot %d's own rings: %s", k.id, a.note.c_str()));
     }
     lines.push_back(
         format("  iso-contour error near knot %d (%d points within 3 knot radii; %d points on %d "

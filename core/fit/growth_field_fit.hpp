@@ -17,7 +17,7 @@
 #include "fit/block_knot_fit.hpp"
 #include "fit/iso_contours.hpp"
 #include "fit/knot_colour_fit.hpp"
-#include "fit/knot_ring_scale.hpp"
+#include "fit/knot_ring_ages.hpp"
 #include "fit/pith_fit.hpp"
 #include "geometry/block.hpp"
 #include "geometry/face_set.hpp"
@@ -73,6 +73,9 @@ struct GrowthFieldFitOptions {
   // Their edges seen on the photos hold their size (rings/knot_outline.hpp, issue 19 item 2); false: the
   // contours alone size them (Mokume Sec. 5.2.4), which leaves the knots far too thin (docs/knots.md).
   bool useKnotOutlines = true;
+  // Their own rings counted inside those edges and compared with the field's years (fit/knot_ring_ages.hpp,
+  // reported only).
+  bool countKnotRings = true;
   // A bootstrap replicate (fit/ring_uncertainty.hpp): the contours are drawn with replacement, whole
   // (the points along one contour do not err independently), with this seed.
   std::optional<std::uint64_t> resampleContoursSeed;
@@ -115,10 +118,10 @@ struct GrowthFieldFitReport {
   double extractSeconds = 0, ringSeconds = 0, distortionSeconds = 0, placementSeconds = 0;
   // Knots (Mokume Sec. 5.2.4): one entry per marked knot id; k_stem fitted when any knot was optimised.
   std::vector<BlockKnotFitEntry> knots;
-  std::vector<KnotOutline> knotOutlines;    // one per knot mark, as found on its photo (issue 19 item 2)
-  KnotColourFit knotColour;                 // knots.darkening from those outlines (with the colours)
-  std::vector<KnotRingScaleFit> knotRings;  // each knot's own rings counted on them, and its ring scale
-  bool knotOutlinesIgnored = false;         // marks, but GrowthFieldFitOptions::useKnotOutlines was off
+  std::vector<KnotOutline> knotOutlines;  // one per knot mark, as found on its photo (issue 19 item 2)
+  KnotColourFit knotColour;               // knots.darkening from those outlines (with the colours)
+  std::vector<KnotRingAges> knotRings;    // each knot's own rings counted on them, against the field's years
+  bool knotOutlinesIgnored = false;       // marks, but GrowthFieldFitOptions::useKnotOutlines was off
   bool knotSmoothnessFitted = false;
   float knotSmoothStem = 0;
   int knotIterations = 0;

@@ -35,7 +35,6 @@ json blockKnotsToJson(const std::vector<BlockKnot>& knots) {
       knot["taper_age_years"] = k.taperAge;
     }
     if (k.dead()) knot["death_years"] = k.deathTime;  // absent: alive, as every knot before issue 19
-    if (k.ringScale != BlockKnot{}.ringScale) knot["ring_scale"] = k.ringScale;  // absent: Eq. 7's rings
     out.push_back(std::move(knot));
   }
   return out;
@@ -53,10 +52,10 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
     if (!entry.is_object()) throw InputError(what + " must be an object, got " + describeJson(entry));
     for (const auto& [key, value] : entry.items()) {
       if (key != "id" && key != "origin" && key != "direction" && key != "speed" && key != "taper" &&
-          key != "taper_age_years" && key != "death_years" && key != "ring_scale")
+          key != "taper_age_years" && key != "death_years")
         throw InputError(what + " has an unknown key \"" + key +
                          "\" (written by a newer Kerf? known: id, origin, direction, speed, taper, "
-                         "taper_age_years, death_years, ring_scale)");
+                         "taper_age_years, death_years)");
     }
     for (const char* key : {"id", "origin", "direction", "speed"})
       if (!entry.contains(key)) throw InputError(what + " lacks \"" + key + "\"");
@@ -68,8 +67,7 @@ std::vector<BlockKnot> blockKnotsFromJson(const json& in) {
     if (!entry["speed"].is_number()) throw InputError(what + ".speed must be a number");
     knot.speed = checkedNumber<float>(entry["speed"].get<double>(), what + ".speed");
     for (const auto& [key, member] :
-         {std::pair{"taper", &knot.taper}, std::pair{"taper_age_years", &knot.taperAge},
-          std::pair{"ring_scale", &knot.ringScale}}) {
+         {std::pair{"taper", &knot.taper}, std::pair{"taper_age_years", &knot.taperAge}}) {
       if (!entry.contains(key)) continue;
       if (!entry[key].is_number()) throw InputError(what + "." + key + " must be a number");
       *member = checkedNumber<float>(entry[key].get<double>(), what + "." + key);

@@ -6,8 +6,7 @@
 //
 // Block mm; "direction" need not be unit length (it is normalised when the model is built). Optional:
 // "taper", "taper_age_years" (issue 19 item 2), "death_years" (a dead knot: the stem's age in years when
-// the branch died; absent or null: alive), "ring_scale" (the knot's own rings per stem year, BlockKnot::
-// ringScale; absent: 1). The global knot settings (smoothness, darkening,
+// the branch died; absent or null: alive). The global knot settings (smoothness, darkening,
 // knots.stem_radius) are parameters (knots.*), not stored here.
 #include <nlohmann/json_fwd.hpp>
 #include <vector>

@@ -180,28 +180,6 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
     compare(cut, renderer_->renderCut(model, plane, 2.5f), "dead_knots_cut");
   }
 
-  // The knots' own rings (BlockKnot::ringScale, issue 19 item 2): fewer rings in both knots, alive and
-  // dead; the CPU's pictures differ from Eq. 7's rings and the GPU draws the same.
-  void knotRingScale() {
-    for (const bool dead : {false, true}) {
-      Project project = demoProject();
-      project.params.knotStemRadius = 90.0f;
-      addTwoKnots(project, dead);
-      const WoodModel plain(project);
-      project.knots[0].ringScale = 0.4f;
-      project.knots[1].ringScale = 0.7f;
-      const WoodModel model(project);
-      const CutPlane plane({0, 0, 0}, {0.2f, 1.0f, 0.4f});
-      const Image cut = renderCut(model, plane, 2.5f);
-      QVERIFY(compareImages(cut, renderCut(plain, plane, 2.5f), 0.02f).meanAbs > 1e-3);
-      const QString name = dead ? "dead_scaled_knots" : "scaled_knots";
-      for (FaceId face : kAllFaces)
-        compare(renderFace(model, face, {96, 96}), renderer_->renderFace(model, face, {96, 96}),
-                QString("%1_face_%2").arg(name).arg(faceLetter(face)));
-      compare(cut, renderer_->renderCut(model, plane, 2.5f), name + "_cut");
-    }
-  }
-
   // Knot checks (knots.checks, Kerf's own: core/model/kernels/knot_checks.glsl): a cut across a thick dead
   // knot's axis past its death, close up (12 px/mm). The cracks are in the CPU's picture (it differs from
   // knots.checks = 0 on a few pixels, each darker) and the GPU draws the same.
