@@ -12,6 +12,11 @@ namespace kerf {
 
 namespace {
 
+float pixelLuminance(const Image& photo, int x, int y) {
+  const float* p = photo.pixel(x, y);
+  return photo.channels >= 3 ? 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] : p[0];
+}
+
 // Luminance at a continuous image position (pixel centres at +0.5), bilinear; false off the photo.
 bool luminanceAt(const Image& photo, float x, float y, float& out) {
   const float fx = x - 0.5f, fy = y - 0.5f;
@@ -22,10 +27,7 @@ bool luminanceAt(const Image& photo, float x, float y, float& out) {
   const int y0 = std::min(static_cast<int>(fy), photo.height - 2 < 0 ? 0 : photo.height - 2);
   const int x1 = std::min(x0 + 1, photo.width - 1), y1 = std::min(y0 + 1, photo.height - 1);
   const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
-  const auto lum = [&](int px, int py) {
-    const float* p = photo.pixel(px, py);
-    return photo.channels >= 3 ? 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] : p[0];
-  };
+  const auto lum = [&](int px, int py) { return pixelLuminance(photo, px, py); };
   out = (1 - ty) * ((1 - tx) * lum(x0, y0) + tx * lum(x1, y0)) +
         ty * ((1 - tx) * lum(x0, y1) + tx * lum(x1, y1));
   return true;
@@ -84,10 +86,7 @@ KnotRingCount countKnotRings(const Image& photo, const Block& block, const KnotO
   // their four neighbours over the whole photo, mostly plain wood (1.48 MAD / sqrt(1.25) for white noise).
   std::vector<float> deviations;
   deviations.reserve(static_cast<std::size_t>(photo.width) * photo.height);
-  const auto lum = [&](int x, int y) {
-    const float* p = photo.pixel(x, y);
-    return photo.channels >= 3 ? 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] : p[0];
-  };
+  const auto lum = [&](int x, int y) { return pixelLuminance(photo, x, y); };
   for (int y = 1; y + 1 < photo.height; ++y)
     for (int x = 1; x + 1 < photo.width; ++x)
       deviations.push_back(
@@ -205,13 +204,13 @@ KnotRingCount countKnotRings(const Image& photo, const Block& block, const KnotO
   if (!depths.empty()) {
     std::nth_element(depths.begin(), depths.begin() + static_cast<std::ptrdiff_t>(depths.size() / 2),
                      depths.end());
-    out.peakRatio = depths[depths.size() / 2];
+    out.lineContrast = depths[depths.size() / 2];
   }
   out.rings = static_cast<float>(rings);
   out.sigma = static_cast<float>(sigma);
   out.pxPerRing = rings > 0 ? static_cast<float>(shortestPx / rings) : 0.0f;
   const std::string what = fixed(rings, 1) + " +- " + fixed(std::min(sigma, 99.0), 1) +
-                           " rings (dark lines " + fixed(out.peakRatio, 1) + "x the noise, " +
+                           " rings (dark lines " + fixed(out.lineContrast, 1) + "x the noise, " +
                            fixed(out.pxPerRing, 1) + " px apart on the shortest ray)";
   if (rings < options.minRings) {
     out.note = "no rings seen inside the knot: " + what;
@@ -227,16 +226,6 @@ KnotRingCount countKnotRings(const Image& photo, const Block& block, const KnotO
   }
   out.found = true;
   out.note = what;
-  return out;
-}
-
-std::vector<KnotRingCount> countKnotRings(const std::array<Image, 6>& photos, const Block& block,
-                                          const std::vector<KnotOutline>& outlines,
-                                          const KnotRingCountOptions& options) {
-  std::vector<KnotRingCount> out;
-  out.reserve(outlines.size());
-  for (const KnotOutline& o : outlines)
-    out.push_back(countKnotRings(photos[faceIndex(o.face)], block, o, options));
   return out;
 }
 

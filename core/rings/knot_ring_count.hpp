@@ -14,7 +14,6 @@
 // are). The count is the mean over the rays; rays are grouped in sectors, and the spread of the sectors'
 // means is its uncertainty. Rings closer than minPxPerRing are not counted (too close to count reliably, or
 // the photo's aliasing); too few, or sectors that disagree, say that no rings are seen.
-#include <array>
 #include <string>
 #include <vector>
 
@@ -36,7 +35,7 @@ struct KnotRingCountOptions {
   float minPxPerRing = 6.0f;
   float smoothPx = 0.6f;           // the rays' smoothing (Gaussian sigma, photo pixels)
   float minDepth = 0.015f;         // a dark line is at least this much darker (luminance 0..1) ...
-  float depthOverNoise = 4.0f;     // ... and this many times the ray's (smoothed) noise
+  float depthOverNoise = 4.0f;     // ... and this many times the photo's noise left after the smoothing
   float maxRelativeSigma = 0.12f;  // the sectors' counts must agree to this share of the count
 };
 
@@ -54,7 +53,7 @@ struct KnotRingCount {
   std::string note;                 // why no count, or what was counted
   float rings = 0;                  // the knot's own rings from its centre to its edge
   float sigma = 0;                  // one standard deviation of `rings`
-  float peakRatio = 0;              // the dark lines' median depth over the noise
+  float lineContrast = 0;           // the dark lines' median depth over the noise
   float pxPerRing = 0;              // the rings' spacing on the photo along the shortest ray
   std::vector<KnotRingSpan> spans;  // the rays with three dark lines or more
 };
@@ -62,10 +61,5 @@ struct KnotRingCount {
 // The rings of the knot of `outline` (found) on `photo` (its face's photo; any channel count).
 KnotRingCount countKnotRings(const Image& photo, const Block& block, const KnotOutline& outline,
                              const KnotRingCountOptions& options = {});
-
-// One count per found outline, in their order (outlines not found give counts not found).
-std::vector<KnotRingCount> countKnotRings(const std::array<Image, 6>& photos, const Block& block,
-                                          const std::vector<KnotOutline>& outlines,
-                                          const KnotRingCountOptions& options = {});
 
 }  // namespace kerf
