@@ -86,7 +86,7 @@ Command addTextureCommand(CLI::App& app) {
         sweeps = defaults.search.maxSweeps, samples = defaults.loss.samples,
         ringPhases = defaults.loss.ringPhaseBins;
     double flatTolerance = defaults.search.flatTolerance;
-    bool noCoarse = false, keepColours = false;
+    bool coarse = defaults.coarseSearch, keepColours = false;
   };
   auto o = std::make_shared<Options>();
   texture->fallthrough();  // kerf-cli's own --stats, --threads, -q may also follow the subcommand
@@ -103,9 +103,10 @@ Command addTextureCommand(CLI::App& app) {
                  16);
   cli::addNumber(texture, "--crop-size", o->cropSize,
                  "Crop side in photo pixels (default " + std::to_string(o->cropSize) + ")", 16, 1024);
-  cli::addNumber(
-      texture, "--sweeps", o->sweeps,
-      "Coordinate-search sweeps (default " + std::to_string(o->sweeps) + "; 0 = coarse search only)", 0, 100);
+  cli::addNumber(texture, "--sweeps", o->sweeps,
+                 "Coordinate-search sweeps (default " + std::to_string(o->sweeps) +
+                     "; 0: none, only the coarse grid if on)",
+                 0, 100);
   cli::addNumber(texture, "--flat-tolerance", o->flatTolerance,
                  "Settle a parameter whose two trials moved the loss by no more than this share of it "
                  "(default " +
@@ -128,7 +129,10 @@ Command addTextureCommand(CLI::App& app) {
           "volumes too); the "
           "procedural parameters are kept as they are")
       ->check(CLI::IsMember({"procedural", "photo"}));
-  texture->add_flag("--no-coarse", o->noCoarse, "Skip the coarse size grid");
+  texture->add_flag(
+      "--coarse,!--no-coarse", o->coarse,
+      "Start with the coarse size grid: x0.5 / x1 / x2 the sizes of fibres, pores and rays (off by default; "
+      "for a start whose pores, rays and fibres are far from the wood's)");
   texture->add_flag("--keep-colours", o->keepColours, "Do not refit the colours after the detail");
   texture->add_option("--compare", o->compare,
                       "Also write an image: photos (top), faces before (middle) and after (bottom), A..F");
@@ -158,7 +162,7 @@ Command addTextureCommand(CLI::App& app) {
         options.loss.samples = o->samples;
         options.search.maxSweeps = o->sweeps;
         options.search.flatTolerance = o->flatTolerance;
-        options.coarseSearch = !o->noCoarse;
+        options.coarseSearch = o->coarse;
         options.refitColours = !o->keepColours;
         if (!o->parameters.empty()) {
           std::string list = o->parameters;

@@ -16,9 +16,9 @@ namespace kerf {
 struct PatternSearchOptions {
   double initialStep = 0.125;  // in unit coordinates
   double minStep = 1.0 / 64;   // a coordinate whose step fell below is settled
-  // 8 sweeps with flatTolerance 0.003 (issue 16 item 6): on CN03 227 evaluations for 288 without it, the
-  // same appearance scores. 4 sweeps (`kerf-cli texture --sweeps 4`, 148 evaluations) scored a little
-  // worse in style (docs/texture.md, "Speed"); --flat-tolerance 0 is the search before, bit for bit.
+  // With flatTolerance 0.003 (issue 16 item 6): on CN03 227 evaluations for 288 without it, the same
+  // appearance scores; --flat-tolerance 0 is the search before, bit for bit. The texture inference runs 4
+  // sweeps (TextureInferenceOptions::search).
   int maxSweeps = 8;
   // A coordinate is settled at once when neither of its trials moved the loss by more than this share of
   // it (0: never): halving the step of a parameter the loss does not see (faint rays, a pore size at zero

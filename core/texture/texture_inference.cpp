@@ -107,6 +107,7 @@ TextureInferenceResult inferTexture(const Block& block, const WoodParameters& pa
   result.lossAfterCoarse = result.lossBefore;
   WoodParameters current = params;
   if (options.coarseSearch && !options.coarseFactors.empty()) {
+    result.coarseSearched = true;
     current = coarseSearch(objective, params, options.coarseFactors, result, progress.part(0.02, 0.2));
     if (options.preview && !(current == params)) options.preview(current);
   }
@@ -226,11 +227,13 @@ std::vector<std::string> formatTextureInferenceReport(const TextureInferenceResu
     if (r.fullFaces) line += format("   L1 at 1 mm %.4f -> %.4f", f.before.l1Blurred, f.after.l1Blurred);
     lines.push_back(line);
   }
-  lines.push_back(
-      format("loss on %d crops: %.4f -> %.4f (coarse, sizes x%.2g fibres, x%.2g pores, x%.2g rays) "
-             "-> %.4f (search, %d sweeps) -> %.4f (%s)",
-             r.crops, r.lossBefore, r.lossAfterCoarse, r.coarseFactors[0], r.coarseFactors[1],
-             r.coarseFactors[2], r.lossAfterSearch, r.sweeps, r.lossAfter, r.colourStep.c_str()));
+  const std::string coarse =
+      r.coarseSearched ? format("%.4f (coarse, sizes x%.2g fibres, x%.2g pores, x%.2g rays)",
+                                r.lossAfterCoarse, r.coarseFactors[0], r.coarseFactors[1], r.coarseFactors[2])
+                       : std::string("(no coarse grid)");
+  lines.push_back(format("loss on %d crops: %.4f -> %s -> %.4f (search, %d sweeps) -> %.4f (%s)", r.crops,
+                         r.lossBefore, coarse.c_str(), r.lossAfterSearch, r.sweeps, r.lossAfter,
+                         r.colourStep.c_str()));
   lines.push_back(format("time: coarse %.2f s, search %.2f s, colours %.2f s, report %.2f s; %d evaluations",
                          r.coarseSeconds, r.searchSeconds, r.colourSeconds, r.reportSeconds, r.evaluations));
   std::string sweeps = "search, loss (evaluations) after each sweep:";

@@ -23,7 +23,10 @@ struct TextureSynthetic {
     truth.params.distortionAmplitude = 0;
     truth.params.ringColorVariation = 0;
     truth.params.mottleStrength = 0;
+    // Rays that show: lighter than the wood, and 0.15 mm thick (2 px here; the demo's 0.06 mm is under
+    // a pixel, where their spacing was left to the layouts' noise, docs/texture.md).
     truth.params.rayOpacity = 0.85f;
+    truth.params.rayWidth = 0.15f;
     truth.params.rayColor = glm::min(truth.params.earlywoodColor * 1.2f, glm::vec3(1.0f));
     rates = truth.effectiveRates();
     const WoodModel model(truth.block, truth.params, rates);
