@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "render/wood_model.hpp"
 
@@ -129,6 +130,40 @@ TEST(Material, PoresAreDotsOnEndGrainAndGroovesAlongIt) {
     across += model.evaluate(centre + glm::vec3(0.1f * i, 0, 0)).pore > 0.05f;
   }
   EXPECT_GT(along, across + 3);
+}
+
+// Vessels, rays and fibres lie in the growth layers (kernels/wood.glsl inGrowthLayers): two points of one
+// ring at different heights, where the rates tilt the ring, share their cross-section position, so a vessel
+// through one runs through the other; with uniform rates the frame's radius is the geometric one.
+TEST(Material, PoresRunInTheGrowthLayers) {
+  const Block block(glm::vec3(40.0f));
+  const WoodParameters p = plainParameters();
+  const WoodModel concentric(block, p, uniformRates(p, block));
+  const glm::vec3 q{3, 5, 10};
+  EXPECT_NEAR(concentric.material().locate(q).c.radius, glm::length(glm::vec2(q.x, q.z + 50)), 1e-3f);
+
+  GrowthRates rates = uniformRates(p, block);
+  for (int ih = 0; ih < rates.heights; ++ih)
+    for (int ia = 0; ia < rates.azimuths; ++ia)
+      for (int ir = 0; ir < rates.radii; ++ir)
+        rates.at(ih, ia, ir) = 1.0f + 0.5f * static_cast<float>(ih) / static_cast<float>(rates.heights - 1);
+  const WoodModel tilted(block, p, rates);
+  const WoodMaterial& m = tilted.material();
+  const glm::vec3 low{0, -15, 10};
+  const float year = m.year(low);
+  // The point of the same ring 30 mm higher, on the same ray from the pith (bisection along z).
+  float z0 = -45, z1 = 30;
+  for (int i = 0; i < 60; ++i) {
+    const float z = 0.5f * (z0 + z1);
+    (m.year({0, 15, z}) < year ? z0 : z1) = z;
+  }
+  const glm::vec3 high{0, 15, 0.5f * (z0 + z1)};
+  ASSERT_NEAR(m.year(high), year, 1e-3f);
+  EXPECT_GT(std::abs(high.z - low.z), 1.0f);  // the ring is tilted: other geometric radii
+  const WoodLocation a = m.locate(low), b = m.locate(high);
+  EXPECT_NEAR(a.c.x, b.c.x, 1e-2f);
+  EXPECT_NEAR(a.c.y, b.c.y, 1e-2f);
+  EXPECT_NEAR(a.c.radius, year * p.ringWidth, 1e-2f);
 }
 
 TEST(Material, RaysRunRadially) {

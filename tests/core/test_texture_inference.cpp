@@ -91,10 +91,10 @@ void expectRecoversKnownDetail(const TextureInferenceOptions& search, bool poreS
     EXPECT_LT(relativeError(r.params.poreRadiusEarly, t.poreRadiusEarly), 0.25);
     EXPECT_LT(relativeError(r.params.poreCellSize, t.poreCellSize), 0.25);
   }
-  // Ray spacing: 0.99 mm for 0.9 with either search (the fixture's rays 0.15 mm thick, 2 px; with the
-  // demo's 0.06 mm rays, under a pixel, the spacing was decided by the layouts' noise: 1.12 mm with the
-  // grid, 1.43 without).
-  EXPECT_LT(relativeError(r.params.raySpacing, t.raySpacing), 0.25);
+  // No claim on the ray spacing here: among this chestnut's dense pores the loss does not see it. At the
+  // true parameters (seed 3) it scored 0.60 / 0.75 / 0.90 / 1.10 / 1.30 / 1.62 / 2.00 mm as 0.295 / 0.241 /
+  // 0.243 / 0.247 / 0.234 / 0.246 / 0.237 (2026-12-07): the 0.99 mm this search used to find was the
+  // layouts' luck. RecoversTheRaySpacingOfAPoreFreeBlock below asks for it where the rays show.
   EXPECT_LT(std::abs(r.params.fiberStrength - t.fiberStrength), 0.15);
   for (FaceId face : kAllFaces) {
     const FaceTextureReport& f = r.faces[faceIndex(face)];
@@ -123,6 +123,30 @@ TEST(TextureInference, RecoversKnownDetailOfASyntheticBlockWithTheCoarseGrid) {
   search.coarseSearch = true;
   search.search.maxSweeps = 8;
   expectRecoversKnownDetail(search, false);
+}
+
+// The rays' spacing, where the rays show: the same block without pores (as in a diffuse-porous wood whose
+// vessels are under a pixel), searched from 1.8x the true spacing. Measured (2026-12-07): 0.78 mm for 0.9;
+// at the true parameters the loss is lowest at 0.9 of 0.6 .. 2.0 mm.
+TEST(TextureInference, RecoversTheRaySpacingOfAPoreFreeBlock) {
+  const test::TextureSynthetic& s = synthetic();
+  WoodParameters truth = s.truth.params;
+  truth.poreDensityEarly = 0;
+  truth.poreDensityLate = 0;
+  const WoodModel model(s.truth.block, truth, s.rates);
+  std::array<Image, 6> photos;
+  for (FaceId face : kAllFaces) photos[faceIndex(face)] = renderFace(model, face, {512, 512}, 2);
+  WoodParameters start = truth;
+  start.seed = 3;
+  start.raySpacing *= 1.8f;
+  start.fiberStrength += 0.3f;
+  TextureInferenceOptions options = fastOptions();
+  options.parameters = {"rays.spacing", "fibers.strength"};
+  const TextureInferenceResult r = inferTexture(s.truth.block, start, s.rates, photos, options);
+  std::printf("ray spacing %.3f (truth %.3f), fibre strength %.3f (%.3f)\n", r.params.raySpacing,
+              truth.raySpacing, r.params.fiberStrength, truth.fiberStrength);
+  EXPECT_LT(relativeError(r.params.raySpacing, truth.raySpacing), 0.25);
+  EXPECT_LT(std::abs(r.params.fiberStrength - truth.fiberStrength), 0.15);
 }
 
 TEST(TextureInference, IsDeterministic) {

@@ -259,11 +259,28 @@ float woodYear(vec3 p) {
   return mergeKnots(u, growthAt(c), c.radius, darkness, shade);
 }
 
+// The tree's frame in its growth layers: the cross-section radius replaced by the growth field's own,
+// G x growth.ring_width, the azimuth and the height kept. In Liu et al. 2016 (Sec. 4.1) the rings are
+// concentric cylinders in the undistorted frame, where the vessels, rays and fibres are placed, so they lie
+// in the rings; the fitted growth rates (Mokume Sec. 5.2.2) bend the rings after that frame, so pores
+// placed by the geometric radius ran straight through a ring that tilts or undulates. With this radius a
+// vessel keeps its growth time along the grain: where the rings undulate, the vessels follow them (on
+// CN03's flat-sawn faces, long streaks hanging from the ring lines, as in the photos; docs/texture.md).
+// With uniform rates G x ring_width is the radius itself.
+Cylindrical inGrowthLayers(Cylindrical c, float stemYear) {
+  float grown = max(stemYear * P.ringWidth, 0.0f);
+  float scale = c.radius > 1e-6f ? grown / c.radius : 1.0f;
+  c.x *= scale;
+  c.y *= scale;
+  c.radius = grown;
+  return c;
+}
+
 // Where a point lies in the tree: what the growth field, its distortion and the knots decide, and no
 // texture parameter (pores, rays, fibres, colours) changes. The texture search computes it once per
 // point and shades it for every candidate (texture/face_crops.hpp).
 struct WoodLocation {
-  Cylindrical c;        // the undistorted point in the tree's frame
+  Cylindrical c;        // the undistorted point in the tree's frame, in its growth layers (inGrowthLayers)
   float year;           // WoodSample.year
   float knotDarkness;   // how much a knot darkens the point (Larsson et al. 2022 Sec. 4.3)
   float knotShade;      // a dead knot's bark ring: its colour factor (Sec. 4.3); 1 elsewhere
@@ -274,8 +291,10 @@ WoodLocation locateWood(vec3 p, bool wantFiber) {
   WoodLocation w;
   Cylindrical distorted = cylindricalOf(p, false);  // undistort needs no azimuth
   vec3 u = undistort(p, distorted, wantFiber, w.fiberDirection);
-  w.c = cylindricalOf(u, true);
-  w.year = mergeKnots(u, growthAt(w.c), w.c.radius, w.knotDarkness, w.knotShade);  // Mokume Sec. 5.2.4 Eq. 7
+  Cylindrical c = cylindricalOf(u, true);
+  float stemYear = growthAt(c);
+  w.year = mergeKnots(u, stemYear, c.radius, w.knotDarkness, w.knotShade);  // Mokume Sec. 5.2.4 Eq. 7
+  w.c = inGrowthLayers(c, stemYear);
   return w;
 }
 
