@@ -51,9 +51,7 @@ class WoodMaterial {
   }
   // The layers one at a time (what layers() puts in each member).
   float latewoodLayer(const WoodLocation& w) const { return kernels_.seasonOf(w.year); }
-  float poreLayer(const WoodLocation& w) const {
-    return kernels_.poreWeight(w.c, kernels_.seasonOf(w.year), w.year);
-  }
+  float poreLayer(const WoodLocation& w) const { return kernels_.poreWeight(w.c, w.year); }
   float rayLayer(const WoodLocation& w) const { return kernels_.rayWeight(w.c); }
   float fiberLayer(const WoodLocation& w) const { return kernels_.fiberLayer(w.c); }
   void ringLayers(const WoodLocation& w, WoodLayers& l) const {

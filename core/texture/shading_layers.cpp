@@ -33,7 +33,8 @@ std::vector<float> keyOf(const WoodParameters& p, int group) {
       return {p.seed,           p.ringOffset,       p.latewoodFraction,
               p.transition,     p.boundarySoftness, p.poreRadiusEarly,
               p.poreRadiusLate, p.poreDensityEarly, p.poreDensityLate,
-              p.poreCellSize,   p.poreLength,       p.poreEarlyTaper};
+              p.poreCellSize,   p.poreLength,       p.poreEarlyTaper,
+              p.poreZone};
     case kRays:
       return {
           p.seed,    p.rayOpacity > 0.0f ? 1.0f : 0.0f, p.rayDensity, p.rayLength, p.raySpacing, p.rayHeight,

@@ -111,6 +111,36 @@ TEST(Material, RingPorousPoresCrowdTheEarlywood) {
   EXPECT_GT(earlyCover / earlyCount, 0.01);
 }
 
+// pores.earlywood_zone widens the band of earlywood pores without touching the colour: with the earlywood
+// 0.4 of the year (latewood share 0.6) and a zone of 2, the ring's first 0.8 is as porous as its earlywood
+// and the colour is the same as with a zone of 1.
+TEST(Material, TheEarlywoodPoreZoneReachesIntoTheLatewood) {
+  const Block block(glm::vec3(40.0f));
+  WoodParameters p = plainParameters();
+  p.latewoodFraction = 0.6f;
+  p.poreDensityEarly = 0.9f, p.poreDensityLate = 0.1f, p.poreRadiusEarly = 0.15f, p.poreRadiusLate = 0.04f;
+  const WoodModel narrow(block, p, uniformRates(p, block));
+  p.poreZone = 2.0f;
+  const WoodModel wide(block, p, uniformRates(p, block));
+  // Pore cover by where in the year a point lies, over an end-grain cross-section (plane y = 0).
+  double narrowCover[3] = {}, wideCover[3] = {};
+  int count[3] = {};
+  for (float x = -15; x < 15; x += 0.05f)
+    for (float z = -15; z < 15; z += 0.05f) {
+      const WoodSample a = narrow.evaluate({x, 0, z}), b = wide.evaluate({x, 0, z});
+      expectColor(a.color / glm::max(a.shade, glm::vec3(1e-6f)),
+                  b.color / glm::max(b.shade, glm::vec3(1e-6f)), 1e-3f);
+      const float phase = narrow.material().yearPhase(a.year);
+      const int part = phase < 0.35f ? 0 : phase > 0.45f && phase < 0.75f ? 1 : phase > 0.85f ? 2 : -1;
+      if (part < 0) continue;
+      narrowCover[part] += a.pore, wideCover[part] += b.pore, ++count[part];
+    }
+  for (int i = 0; i < 3; ++i) ASSERT_GT(count[i], 1000) << i;
+  EXPECT_NEAR(wideCover[0] / count[0], narrowCover[0] / count[0], 0.2 * narrowCover[0] / count[0]);
+  EXPECT_GT(wideCover[1] / count[1], 5 * narrowCover[1] / count[1]);      // earlywood pores in the latewood
+  EXPECT_NEAR(wideCover[2] / count[2], narrowCover[2] / count[2], 1e-6);  // the latewood beyond the zone
+}
+
 TEST(Material, PoresAreDotsOnEndGrainAndGroovesAlongIt) {
   const Block block(glm::vec3(40.0f));
   WoodParameters p = plainParameters();

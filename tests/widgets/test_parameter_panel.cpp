@@ -428,7 +428,8 @@ class ParameterPanelTest : public QObject {
       QCOMPARE(panel.row(static_cast<int>(i))->isVisible(), pore);
       shown += pore;
     }
-    QCOMPARE(shown, 9);  // the pores group: spacing, two radii, taper, two densities, length, darkness, hue
+    QCOMPARE(shown,
+             10);  // the pores group: spacing, two radii, taper, zone, two densities, length, darkness, hue
     QVERIFY(!child<QToolButton>(&panel, "section:growth")->isVisible());
     QVERIFY(child<QToolButton>(&panel, "section:pores")->isVisible());
     saveShot(&panel, "parameter_panel_filtered.png");

@@ -119,13 +119,21 @@ float yearPhase(float year) {
   return year - P.ringOffset - floor(year - P.ringOffset);
 }
 
-// Liu Sec. 4.2: a square wave over the year with a controllable early-to-latewood transition.
-float seasonOf(float year) {
+// Liu Sec. 4.2: a square wave over the year with a controllable early-to-latewood transition, the
+// earlywood taking `earlywoodShare` of the year.
+float seasonWith(float year, float earlywoodShare) {
   float f = yearPhase(year);
-  float latewoodStart = 1.0f - P.latewoodFraction;
+  float latewoodStart = earlywoodShare;
   float rise = stepSmooth(latewoodStart * (1.0f - P.transition), latewoodStart + 1e-4f, f);
   float fall = 1.0f - stepSmooth(1.0f - P.boundarySoftness, 1.0f, f);
   return rise * fall;
+}
+float seasonOf(float year) {
+  return seasonWith(year, 1.0f - P.latewoodFraction);
+}
+// The same for the vessels: their earlywood zone is pores.earlywood_zone times the colour's.
+float poreEarlywoodShare() {
+  return clamp((1.0f - P.latewoodFraction) * P.poreZone, 0.0f, 1.0f);
 }
 
 // The fitted ring profile (Mokume Sec. 5.3.2's base colour as a function of the growth value): extra
@@ -172,12 +180,14 @@ float ringProfileAt(float year) {
 // around the point are searched; the radius is capped at one cell for that.
 KERF_CONST int kPoresPerCell = 2;
 
-float poreWeight(Cylindrical c, float season, float year) {
+float poreWeight(Cylindrical c, float year) {
+  float earlywoodShare = poreEarlywoodShare();
+  float season = seasonWith(year, earlywoodShare);
   float radius = P.poreRadiusEarly + season * (P.poreRadiusLate - P.poreRadiusEarly);
   if (P.poreEarlyTaper > 0.0f) {
     // pores.earlywood_taper: 1 + taper (1/2 - where in the earlywood), on the earlywood's share of the
     // radius; the mean over the earlywood stays pores.radius_earlywood.
-    float intoEarlywood = clamp(yearPhase(year) / max(1.0f - P.latewoodFraction, 0.01f), 0.0f, 1.0f);
+    float intoEarlywood = clamp(yearPhase(year) / max(earlywoodShare, 0.01f), 0.0f, 1.0f);
     radius *= 1.0f + (1.0f - season) * P.poreEarlyTaper * (0.5f - intoEarlywood);
   }
   float density = P.poreDensityEarly + season * (P.poreDensityLate - P.poreDensityEarly);
@@ -304,7 +314,7 @@ WoodLocation locateWood(vec3 p, bool wantFiber) {
 // pores, fibres and rings of the others.
 struct WoodLayers {
   float latewood;     // seasonOf(year): rings.offset, latewood_fraction, transition, boundary_softness
-  float pore;         // poreWeight: pores.* but darkness and shadow hue, and the latewood
+  float pore;         // poreWeight: pores.* but darkness and shadow hue, and the rings' season
   float ray;          // rayWeight: rays.* but colour; 0 where rays.density or rays.opacity is 0
   float fiber;        // fiberNoiseAt: fibers.width, fibers.length; 0 where fibers.strength is 0
   float ringProfile;  // ringProfileAt(year): rings.offset, rings.profile_*
@@ -327,7 +337,7 @@ float mottleAt(Cylindrical c) {
 WoodLayers woodLayers(WoodLocation w) {
   WoodLayers l;
   l.latewood = seasonOf(w.year);
-  l.pore = poreWeight(w.c, l.latewood, w.year);
+  l.pore = poreWeight(w.c, w.year);
   l.ray = rayWeight(w.c);
   l.fiber = fiberLayer(w.c);
   l.ringProfile = ringProfileAt(w.year);
