@@ -96,6 +96,7 @@ struct GrowthFieldFitReport {
   bool anatomyUsed = false;                                    // as a prior by the pith fit
   double anatomyAngleDeg = 0;                                  // between the pith axis and the fibres
   bool distortionsFitted = false;
+  float wobbleRemovedMm = 0;  // the grain wobble (distortion.amplitude) the fit set to 0
   int rateHeights = 0, rateAzimuths = 0, rateRadii = 0, distortionIterations = 0;
   double lossBeforeRings = 0, lossAfterRings = 0;  // distortion fit, mean over faces, ring spacings
   double imageLossBefore = 0, imageLossAfter = 0;  // Eq. 5, mean |M(G) - ARL| (0: no image term)
