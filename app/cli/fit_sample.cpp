@@ -44,7 +44,8 @@ void addFitSampleOptions(CLI::App* command, FitSampleOptions& o) {
       0.0, 10000.0);
   command->add_flag("--ignore-pores", o.ignorePores,
                     "Ring-porous species: do not let the pores choose the pith's side when the ring "
-                    "contours cannot (they are still reported)");
+                    "contours cannot, nor where the earlywood starts against the ring lines (both are "
+                    "still reported)");
   command->add_option(
       "--species", o.species,
       "Start the wood (colours, pores, rays, ring profile) from this species' preset, e.g. kuri "
@@ -195,6 +196,7 @@ FittedSample fitSample(const FitSampleOptions& o, Context& context) {
   options.minFaces = kMinFitFaces;
   options.plausiblePithDistanceMm = o.maxPithDistance;
   options.pithSideByPores = !o.ignorePores;
+  options.earlywoodByPores = !o.ignorePores;
   options.useKnotOutlines = !o.ignoreKnotEdges;
   const GrowthFieldFitResult fit = [&] {
     try {

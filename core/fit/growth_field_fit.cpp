@@ -389,6 +389,19 @@ GrowthFieldFitResult fitGrowthFieldToSample(const GrowthFieldFitInput& input, co
       report.poreBandsMirrored = mirroredBands;
     }
   }
+  // Where the earlywood starts: the ring maps' lines run through the pore band (fit/pore_band_side.hpp).
+  // Only the phase moves (growth.ring_offset), never the rings' shape; a user's numbered traces mark the
+  // boundaries themselves and keep them.
+  if (photos && chosen->rates && isRingPorous(current) && report.numberedTraces == 0) {
+    const double share = std::clamp((1.0 - current.latewoodFraction) * current.poreZone, 0.1, 0.5);
+    report.earlywoodShift = poreBandStart(GrowthField(chosen->params, *chosen->rates),
+                                          chosen->params.ringOffset, block, input.photos, share);
+    if (options.earlywoodByPores && report.earlywoodShift &&
+        std::abs(*report.earlywoodShift) <= kMaxEarlywoodShift) {
+      chosen->params.ringOffset += static_cast<float>(*report.earlywoodShift);
+      report.earlywoodShifted = true;
+    }
+  }
   if (mirrored) {
     report.alternativeLossRings = mirrored->finalLossRings;
     out.alternative = std::move(*mirrored);
@@ -571,6 +584,11 @@ std::vector<ReportLine> formatGrowthFieldFitReport(const GrowthFieldFitReport& r
   } else {
     lines.push_back("distortions (Mokume Eq. 4-6) not fitted (pith only): uniform growth rates");
   }
+  if (r.earlywoodShift)
+    lines.push_back(format("earlywood: the photos' pore band starts %.2f of a year %s the ring lines; %s",
+                           std::abs(*r.earlywoodShift), *r.earlywoodShift < 0 ? "before" : "after",
+                           r.earlywoodShifted ? "the rings' phase was moved there (growth.ring_offset)"
+                                              : "too far to be the same band: the phase was kept"));
   if (r.coloursFitted) {
     std::string faces;
     for (FaceId f : kAllFaces) {

@@ -66,6 +66,9 @@ struct GrowthFieldFitOptions {
   double plausiblePithDistanceMm = 500;
   // Ring-porous wood with photos: when the side is ambiguous, the pores choose it (fit/pore_band_side.hpp).
   bool pithSideByPores = true;
+  // Ring-porous wood with photos and ring lines not numbered by the user: the earlywood starts where the
+  // photos' pore band does (fit/pore_band_side.hpp poreBandStart), not at the ring maps' line.
+  bool earlywoodByPores = true;
   // Step 3, colour initialisation (fit/colour_fit.hpp), when there are face photos.
   bool fitColours = true;
   // Knots from input.knotMarks (not with pithOnly).
@@ -106,6 +109,10 @@ struct GrowthFieldFitReport {
   // under the chosen pith and under the mirrored one; whether they chose the side against the contours.
   std::optional<double> poreBandsChosen, poreBandsMirrored;
   bool pithSideByPores = false;
+  // The photos' pore band against the ring lines (fit/pore_band_side.hpp poreBandStart): how far (years)
+  // the earlywood was moved so that it starts where the pores do; set when it was measured.
+  std::optional<double> earlywoodShift;
+  bool earlywoodShifted = false;  // applied (within kMaxEarlywoodShift, rings not numbered by the user)
   std::optional<double> alternativeLossRings;  // the other candidate's field, when fitted
   std::string alternativeNote;                 // why it was not, when it could not be
   bool ringsFromGrayMap = false;               // ring levels from M's peaks (Eq. 6)

@@ -34,6 +34,18 @@ struct PoreBandPlacement {
 PoreBandPlacement poreBandPlacement(const GrowthField& field, float ringOffset, const Block& block,
                                     const std::array<Image, 6>& photos);
 
+// Where the earlywood begins, as the pores show it (ring-porous wood): the shift of the ring phase (years,
+// in [-0.5, 0.5)) that brings the start of the earlywood to the start of the `bandShare`-wide part of the
+// ring phase holding the most dark detail in the photos, measured under rings at G = ringOffset + k; the
+// ring offset that draws the pores where the photos have them is ringOffset + the shift. The ring maps'
+// lines run through the middle of the dark pore band (CN03: the band reaches a tenth of a year before
+// them), while the model's year starts with its pores. nullopt without dark detail.
+std::optional<double> poreBandStart(const GrowthField& field, float ringOffset, const Block& block,
+                                    const std::array<Image, 6>& photos, double bandShare);
+
+// A shift larger than this is not the same band (the pores of the ring before or after): kept out.
+inline constexpr double kMaxEarlywoodShift = 0.25;
+
 // How clearly the pores must open the rings under one pith and close them under the other before they
 // overrule the contours' choice (CN03: +0.59 against -0.56).
 inline constexpr double kPoreBandSideMargin = 0.2;

@@ -53,6 +53,7 @@ RingUncertainty estimateRingUncertainty(const GrowthFieldFitInput& input, const 
   GrowthFieldFitOptions replicate = fitOptions;
   replicate.fitAlternative = false;
   replicate.pithSideByPores = false;
+  replicate.earlywoodByPores = false;  // the reference's phase goes to every refit below
   replicate.fitColours = false;
   replicate.fitKnots = false;  // the fitted knots are merged into every replicate below
   replicate.preview = nullptr;
@@ -70,7 +71,12 @@ RingUncertainty estimateRingUncertainty(const GrowthFieldFitInput& input, const 
     const GrowthFieldFitResult refit =
         fitGrowthFieldToSample(replicateInput, block, params, replicate, progress.part(from, 0.97 * to));
     if (!refit.rates) continue;
-    models.push_back(std::make_unique<const WoodModel>(block, refit.params, *refit.rates, fitted.knots));
+    // One phase for all: without numbered traces a refit puts its rings at whole years, and where the
+    // earlywood starts against them (the fit's shift by the pores, or the user's own ring_offset) is the
+    // reference's. The refits differ in their rings, not in that.
+    WoodParameters refitParams = refit.params;
+    if (refit.report.numberedTraces == 0) refitParams.ringOffset = params.ringOffset;
+    models.push_back(std::make_unique<const WoodModel>(block, refitParams, *refit.rates, fitted.knots));
   }
   if (models.size() < 2) throw InputError("too few refits succeeded to say how sure the fit is");
 

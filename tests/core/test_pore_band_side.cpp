@@ -3,9 +3,11 @@
 // straight, so the ring contours alone barely tell the pith from its mirror image through the block.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "cn03_sample.hpp"
 #include "field/growth_field.hpp"
@@ -70,6 +72,25 @@ TEST(PoreBandSide, PoresOpenTheRingsOnlyUnderTheTruePith) {
   ASSERT_EQ(truePith.shape.size(), 10u);
   EXPECT_GT(truePith.earlyMinusLate, kPoreBandSideMargin);
   EXPECT_LT(mirrored.earlyMinusLate, -kPoreBandSideMargin);
+}
+
+// Where the earlywood starts: faces drawn with the earlywood starting at G = k (ring offset 0), read
+// under rings placed elsewhere, give back the shift to the truth, both ways and across the ring line.
+TEST(PoreBandSide, ThePoresTellWhereTheEarlywoodStarts) {
+  const KuriBlock& k = kuri();
+  const double share = 1.0 - k.params.latewoodFraction;
+  for (float assumed : {0.12f, -0.15f, 0.0f}) {
+    const std::optional<double> shift = poreBandStart(k.field(k.truth), assumed, k.block, k.photos, share);
+    ASSERT_TRUE(shift);
+    EXPECT_NEAR(assumed + *shift, 0.0, 0.04) << "rings assumed at G = " << assumed << " + k";
+  }
+  // Photos without dark detail say nothing.
+  std::array<Image, 6> plain;
+  for (FaceId f : kAllFaces) {
+    plain[faceIndex(f)] = Image(64, 64, 3);
+    std::fill(plain[faceIndex(f)].pixels.begin(), plain[faceIndex(f)].pixels.end(), 0.5f);
+  }
+  EXPECT_FALSE(poreBandStart(k.field(k.truth), 0.0f, k.block, plain, share));
 }
 
 // The whole fit: from ring images and the photos, the pith lands on the true side, and the report says
