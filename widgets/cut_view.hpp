@@ -66,6 +66,7 @@ struct CutPhotoPicture {
   std::shared_ptr<const WoodModel> differenceModel;
   std::shared_ptr<const BoardWood> differenceBoard;  // log mode: the board's wood it was computed against
   bool differenceOfAppearance = false;               // against the photo-true cut, not the procedural wood
+  qint64 differencePhoto = 0;  // the photo's QImage::cacheKey: a heat map of an earlier photo is never shown
 };
 
 class CutView : public QOpenGLWidget, protected QOpenGLExtraFunctions {

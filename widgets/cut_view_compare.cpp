@@ -50,8 +50,9 @@ bool CutView::showsCutPhoto() const {
 }
 
 bool CutView::differenceUpToDate() const {
-  return !cutPhoto_.difference.isNull() && cutPhoto_.differenceModel == model_ &&
-         cutPhoto_.differenceBoard == boardWood_ && cutPhoto_.differenceOfAppearance == showsCutAppearance();
+  return !cutPhoto_.difference.isNull() && cutPhoto_.differencePhoto == cutPhoto_.photo.image.cacheKey() &&
+         cutPhoto_.differenceModel == model_ && cutPhoto_.differenceBoard == boardWood_ &&
+         cutPhoto_.differenceOfAppearance == showsCutAppearance();
 }
 
 QRectF CutView::cutRect() const {

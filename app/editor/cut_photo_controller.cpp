@@ -318,8 +318,14 @@ void CutPhotoController::startDifference() {
                                                   : appearance;
         return differenceHeatMap(photo, wood);
       },
-      [this, generation, model, board, appearance](const QVariant& result) {
+      [this, generation, model, board, appearance, photo](const QVariant& result) {
         if (generation != differenceGeneration_) return;
+        // Another photo was laid on the cut meanwhile (its own start may have been skipped while the
+        // panel showed something else): this heat map is of the old one.
+        if (cutView_->cutPhoto().photo.image.cacheKey() != photo.cacheKey()) {
+          startDifference();
+          return;
+        }
         if (isError(result)) {
           log("warning", tr("The cut photo could not be compared with the model: %1").arg(result.toString()));
           return;
@@ -329,6 +335,7 @@ void CutPhotoController::startDifference() {
         picture.differenceModel = model;
         picture.differenceBoard = board;
         picture.differenceOfAppearance = !appearance.isNull();
+        picture.differencePhoto = photo.cacheKey();
         cutView_->setCutPhoto(picture);
         emit differenceReady();
         startDifference();  // the model or the appearance may have changed meanwhile

@@ -108,6 +108,8 @@ class TestCutPhoto : public QObject {
   void waitForDifference() {
     QTRY_VERIFY_WITH_TIMEOUT(view()->differenceUpToDate(), kTimeoutMs);
     QCoreApplication::processEvents();
+    // The heat map is of the photo shown, never of the one before it (a late job of the earlier photo).
+    QCOMPARE(view()->cutPhoto().difference.size(), view()->cutPhoto().photo.image.size());
   }
 
   QTemporaryDir dir_;
