@@ -56,6 +56,7 @@ class TestCutView : public QObject {
   void zoomAndPan();
   void cursorPosition();
   void ringUncertaintyOverlay();
+  void aHeatMapIsUpToDateOnlyForItsOwnPhoto();
   void reducedResolutionWhileStreaming();
   void frameTimes();
   void logModeFrameTimes();
@@ -314,6 +315,32 @@ void TestCutView::cursorPosition() {
   QApplication::sendEvent(view_.get(), &away);
   QCOMPARE(spy.count(), 1);
   QVERIFY(spy.takeFirst().at(0).toString().isEmpty());
+}
+
+// The Difference view's heat map belongs to one cut photo: after another photo is laid on the cut, a
+// heat map computed for the earlier one (a background job that landed late) is not up to date, so the
+// controller compares again instead of showing it (CI once read such a stale map on a busy machine).
+void TestCutView::aHeatMapIsUpToDateOnlyForItsOwnPhoto() {
+  QImage first(40, 30, QImage::Format_RGB32), second(40, 30, QImage::Format_RGB32);
+  first.fill(Qt::white);
+  second.fill(Qt::gray);
+  CutPhotoPicture picture;
+  picture.photo.image = first;
+  picture.difference = first;
+  picture.differenceModel = view_->model();
+  picture.differenceBoard = view_->boardWood();
+  picture.differenceOfAppearance = view_->showsCutAppearance();
+  picture.differencePhoto = first.cacheKey();
+  view_->setCutPhoto(picture);
+  QVERIFY(view_->differenceUpToDate());
+  picture.photo.image = second;  // a new photo, the old heat map still attached
+  view_->setCutPhoto(picture);
+  QVERIFY(!view_->differenceUpToDate());
+  picture.differencePhoto = second.cacheKey();
+  view_->setCutPhoto(picture);
+  QVERIFY(view_->differenceUpToDate());
+  view_->setCutPhoto(CutPhotoPicture{});  // the other tests draw no photo
+  QVERIFY(!view_->differenceUpToDate());
 }
 
 // How sure the fit is, over the cut: a grid that is sure on the block's -x side and unsure on its +x side
