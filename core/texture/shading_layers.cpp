@@ -34,7 +34,7 @@ std::vector<float> keyOf(const WoodParameters& p, int group) {
               p.transition,     p.boundarySoftness, p.poreRadiusEarly,
               p.poreRadiusLate, p.poreDensityEarly, p.poreDensityLate,
               p.poreCellSize,   p.poreLength,       p.poreEarlyTaper,
-              p.poreZone};
+              p.poreZone,       p.poreEarlyThinning};
     case kRays:
       return {
           p.seed,    p.rayOpacity > 0.0f ? 1.0f : 0.0f, p.rayDensity, p.rayLength, p.raySpacing, p.rayHeight,

@@ -1,6 +1,7 @@
 // The procedural wood texture: analytic colours, Beer's law, pores, rays, fibre directions.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -111,6 +112,31 @@ TEST(Material, RingPorousPoresCrowdTheEarlywood) {
   EXPECT_GT(earlyCover / earlyCount, 0.01);
 }
 
+// Mean pore cover of two models of the same colour over an end-grain cross-section (plane y = 0), in three
+// parts of the year (by a's ring phase: part i is [from[i], to[i])); checks the colours are the same.
+struct PoreCoverByPart {
+  std::array<double, 3> a{}, b{};
+};
+PoreCoverByPart poreCoverByPart(const WoodModel& a, const WoodModel& b, const std::array<float, 3>& from,
+                                const std::array<float, 3>& to) {
+  PoreCoverByPart cover;
+  std::array<int, 3> count{};
+  for (float x = -15; x < 15; x += 0.05f)
+    for (float z = -15; z < 15; z += 0.05f) {
+      const WoodSample sa = a.evaluate({x, 0, z}), sb = b.evaluate({x, 0, z});
+      expectColor(sa.color / glm::max(sa.shade, glm::vec3(1e-6f)),
+                  sb.color / glm::max(sb.shade, glm::vec3(1e-6f)), 1e-3f);
+      const float phase = a.material().yearPhase(sa.year);
+      for (int i = 0; i < 3; ++i)
+        if (phase >= from[i] && phase < to[i]) cover.a[i] += sa.pore, cover.b[i] += sb.pore, ++count[i];
+    }
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_GT(count[i], 1000) << i;
+    cover.a[i] /= std::max(count[i], 1), cover.b[i] /= std::max(count[i], 1);
+  }
+  return cover;
+}
+
 // pores.earlywood_zone widens the band of earlywood pores without touching the colour: with the earlywood
 // 0.4 of the year (latewood share 0.6) and a zone of 2, the ring's first 0.8 is as porous as its earlywood
 // and the colour is the same as with a zone of 1.
@@ -122,23 +148,27 @@ TEST(Material, TheEarlywoodPoreZoneReachesIntoTheLatewood) {
   const WoodModel narrow(block, p, uniformRates(p, block));
   p.poreZone = 2.0f;
   const WoodModel wide(block, p, uniformRates(p, block));
-  // Pore cover by where in the year a point lies, over an end-grain cross-section (plane y = 0).
-  double narrowCover[3] = {}, wideCover[3] = {};
-  int count[3] = {};
-  for (float x = -15; x < 15; x += 0.05f)
-    for (float z = -15; z < 15; z += 0.05f) {
-      const WoodSample a = narrow.evaluate({x, 0, z}), b = wide.evaluate({x, 0, z});
-      expectColor(a.color / glm::max(a.shade, glm::vec3(1e-6f)),
-                  b.color / glm::max(b.shade, glm::vec3(1e-6f)), 1e-3f);
-      const float phase = narrow.material().yearPhase(a.year);
-      const int part = phase < 0.35f ? 0 : phase > 0.45f && phase < 0.75f ? 1 : phase > 0.85f ? 2 : -1;
-      if (part < 0) continue;
-      narrowCover[part] += a.pore, wideCover[part] += b.pore, ++count[part];
-    }
-  for (int i = 0; i < 3; ++i) ASSERT_GT(count[i], 1000) << i;
-  EXPECT_NEAR(wideCover[0] / count[0], narrowCover[0] / count[0], 0.2 * narrowCover[0] / count[0]);
-  EXPECT_GT(wideCover[1] / count[1], 5 * narrowCover[1] / count[1]);      // earlywood pores in the latewood
-  EXPECT_NEAR(wideCover[2] / count[2], narrowCover[2] / count[2], 1e-6);  // the latewood beyond the zone
+  const PoreCoverByPart cover = poreCoverByPart(narrow, wide, {0.0f, 0.45f, 0.85f}, {0.35f, 0.75f, 1.0f});
+  EXPECT_NEAR(cover.b[0], cover.a[0], 0.2 * cover.a[0]);
+  EXPECT_GT(cover.b[1], 5 * cover.a[1]);      // earlywood pores in the latewood
+  EXPECT_NEAR(cover.b[2], cover.a[2], 1e-6);  // the latewood beyond the zone
+}
+
+// pores.earlywood_thinning: the zone's first rows stay as dense as without it, its last ones thin out, the
+// latewood beyond the zone and the colour do not change. Earlywood 0.4 of the year, zone 2: the pores' zone
+// is the first 0.8 of the year, and a thinning of 1 leaves none at its end.
+TEST(Material, ThinningKeepsTheEarlywoodPoresDenseAtTheRingLine) {
+  const Block block(glm::vec3(40.0f));
+  WoodParameters p = plainParameters();
+  p.latewoodFraction = 0.6f, p.poreZone = 2.0f;
+  p.poreDensityEarly = 0.9f, p.poreDensityLate = 0.1f, p.poreRadiusEarly = 0.15f, p.poreRadiusLate = 0.04f;
+  const WoodModel even(block, p, uniformRates(p, block));
+  p.poreEarlyThinning = 1.0f;
+  const WoodModel thinned(block, p, uniformRates(p, block));
+  const PoreCoverByPart cover = poreCoverByPart(even, thinned, {0.0f, 0.55f, 0.85f}, {0.15f, 0.75f, 1.0f});
+  EXPECT_GT(cover.b[0], 0.7 * cover.a[0]);    // the first rows: still dense
+  EXPECT_LT(cover.b[1], 0.4 * cover.a[1]);    // the zone's end: thinned out
+  EXPECT_NEAR(cover.b[2], cover.a[2], 1e-6);  // the latewood beyond the zone
 }
 
 TEST(Material, PoresAreDotsOnEndGrainAndGroovesAlongIt) {

@@ -73,6 +73,7 @@ class GpuParityTest : public QObject, kerf::testing::GlRendererFixture<GpuImageR
     p.distortionAmplitude = 3, p.distortionScale = 6, p.rayDensity = 1, p.rayOpacity = 1, p.rayWidth = 0.2f;
     p.poreDensityLate = 0.8f, p.fiberStrength = 0.8f, p.mottleStrength = 0.6f, p.ringColorVariation = 0.8f;
     p.poreEarlyTaper = 1;  // the earlywood's pores shrinking through the year (ring-porous wood)
+    p.poreZone = 2, p.poreEarlyThinning = 0.7f;  // a wide pore zone thinning out towards the latewood
     p.sapwoodStart = 22, p.pithTilt = 25, p.pithOrigin = {3, 0, -30};
     // A fitted ring profile and season weight (issue 16), knots of both signs around the year.
     p.seasonShading = 0.4f, p.ringProfile0 = 0.9f, p.ringProfile1 = 0.6f, p.ringProfile2 = -0.2f;

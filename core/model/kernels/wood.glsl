@@ -190,7 +190,13 @@ float poreWeight(Cylindrical c, float year) {
     float intoEarlywood = clamp(yearPhase(year) / max(earlywoodShare, 0.01f), 0.0f, 1.0f);
     radius *= 1.0f + (1.0f - season) * P.poreEarlyTaper * (0.5f - intoEarlywood);
   }
-  float density = P.poreDensityEarly + season * (P.poreDensityLate - P.poreDensityEarly);
+  float densityEarly = P.poreDensityEarly;
+  if (P.poreEarlyThinning > 0.0f) {
+    // pores.earlywood_thinning: the earlywood's density falls linearly across the pore zone.
+    float intoZone = clamp(yearPhase(year) / max(earlywoodShare, 0.01f), 0.0f, 1.0f);
+    densityEarly *= 1.0f - P.poreEarlyThinning * intoZone;
+  }
+  float density = densityEarly + season * (P.poreDensityLate - densityEarly);
   if (radius <= 0.0f || density <= 0.0f) return 0.0f;
   float cell = P.poreCellSize;
   int ci = int(floor(c.x / cell));
