@@ -428,8 +428,8 @@ class ParameterPanelTest : public QObject {
       QCOMPARE(panel.row(static_cast<int>(i))->isVisible(), pore);
       shown += pore;
     }
-    // The pores group: spacing, two radii, taper, zone, two densities, length, darkness, hue.
-    QCOMPARE(shown, 10);
+    // The pores group: spacing, two radii, taper, zone, thinning, two densities, length, darkness, hue.
+    QCOMPARE(shown, 11);
     QVERIFY(!child<QToolButton>(&panel, "section:growth")->isVisible());
     QVERIFY(child<QToolButton>(&panel, "section:pores")->isVisible());
     saveShot(&panel, "parameter_panel_filtered.png");
