@@ -193,7 +193,7 @@ float poreWeight(Cylindrical c, float year) {
   float densityEarly = P.poreDensityEarly;
   if (P.poreEarlyThinning > 0.0f) {
     // pores.earlywood_thinning: the earlywood's density falls linearly across the pore zone. Past the zone
-    // it is 0 again: the soft ring boundary at the year's end is the next year's first row.
+    // nothing is thinned: the soft ring boundary at the year's end is the next year's first row.
     float phase = yearPhase(year);
     float intoZone = phase < earlywoodShare ? phase / max(earlywoodShare, 0.01f) : 0.0f;
     densityEarly *= 1.0f - P.poreEarlyThinning * intoZone;
