@@ -25,7 +25,11 @@
 using namespace kerf;
 
 namespace {
-constexpr int kTimeoutMs = 240000;
+// Only a hang guard: the waits are on the editor's signals. The detection and the knot fit take about 44 s
+// released and 280 s under ASan + UBSan (stop 40's clean clone: the former 240 s bound failed there, on an
+// idle machine), so the bound sits just under ctest's TIMEOUT for this test (tests/app/CMakeLists.txt),
+// and no machine's speed decides the verdict.
+constexpr int kTimeoutMs = 1700000;
 }
 
 class TestKnotsFollowMarks : public QObject {
