@@ -30,7 +30,7 @@ namespace {
 // idle machine), so the bound sits just under ctest's TIMEOUT for this test (tests/app/CMakeLists.txt),
 // and no machine's speed decides the verdict.
 constexpr int kTimeoutMs = 1700000;
-}
+}  // namespace
 
 class TestKnotsFollowMarks : public QObject {
   Q_OBJECT
