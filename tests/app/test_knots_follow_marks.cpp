@@ -25,10 +25,10 @@
 using namespace kerf;
 
 namespace {
-// Only a hang guard: the waits are on the editor's signals. The detection and the knot fit take about 44 s
-// released and 280 s under ASan + UBSan (stop 40's clean clone: the former 240 s bound failed there, on an
-// idle machine), so the bound sits just under ctest's TIMEOUT for this test (tests/app/CMakeLists.txt),
-// and no machine's speed decides the verdict.
+// Only a hang guard: the waits are on the editor's signals. The whole test takes 35-44 s released and about
+// 290 s under ASan + UBSan (2026-12-08, an idle 2-core machine: the former 240 s bound on the knot fit failed
+// there), so the bound sits just under ctest's TIMEOUT for this test (tests/app/CMakeLists.txt), and no
+// machine's speed decides the verdict.
 constexpr int kTimeoutMs = 1700000;
 }  // namespace
 
